@@ -1,0 +1,17 @@
+#pragma once
+// Creating a run's output folder and writing what every run leaves behind: the resolved config and the version.
+#include <yaml-cpp/yaml.h>
+
+#include <string>
+
+namespace hullopt::app {
+
+/// Creates dir (and parents). Writes config.resolved.yaml (with a header naming the tool version, the command
+/// and the source config) and VERSION. Throws io::InputError if the folder cannot be created or written.
+void PrepareOutputDir(const std::string& dir, const std::string& command, const std::string& config_file,
+                      const YAML::Node& resolved);
+
+/// Path join: dir + "/" + name.
+std::string OutPath(const std::string& dir, const std::string& name);
+
+}  // namespace hullopt::app
