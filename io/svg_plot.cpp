@@ -34,11 +34,20 @@ std::string Escape(const std::string& s) {
   out.reserve(s.size());
   for (char c : s) {
     switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      default: out += c;
+      case '&':
+        out += "&amp;";
+        break;
+      case '<':
+        out += "&lt;";
+        break;
+      case '>':
+        out += "&gt;";
+        break;
+      case '"':
+        out += "&quot;";
+        break;
+      default:
+        out += c;
     }
   }
   return out;
@@ -153,7 +162,8 @@ Style SeriesStyle(const PlotSeries& s, int index) {
   return st;
 }
 
-std::string Marker(MarkerShape shape, double x, double y, double size, const std::string& color, bool hollow) {
+std::string Marker(MarkerShape shape, double x, double y, double size, const std::string& color,
+                   bool hollow) {
   const double r = size / 2.0;
   const std::string fill = hollow ? "#ffffff" : color;
   const std::string paint = " fill=\"" + fill + "\" stroke=\"" + color + "\" stroke-width=\"1.3\"";
@@ -177,8 +187,8 @@ std::string Marker(MarkerShape shape, double x, double y, double size, const std
       break;
     case MarkerShape::kCross:
       o << "<path d=\"M" << Num(x - r) << " " << Num(y - r) << "L" << Num(x + r) << " " << Num(y + r) << "M"
-        << Num(x - r) << " " << Num(y + r) << "L" << Num(x + r) << " " << Num(y - r) << "\" stroke=\"" << color
-        << "\" stroke-width=\"1.8\" fill=\"none\"/>";
+        << Num(x - r) << " " << Num(y + r) << "L" << Num(x + r) << " " << Num(y - r) << "\" stroke=\""
+        << color << "\" stroke-width=\"1.8\" fill=\"none\"/>";
       break;
     case MarkerShape::kPlus:
       o << "<path d=\"M" << Num(x - r) << " " << Num(y) << "L" << Num(x + r) << " " << Num(y) << "M" << Num(x)
@@ -237,7 +247,8 @@ int CountInside(const PlotPanel& panel, const Axis& ax, const Axis& ay, double x
 void DrawLegendSample(std::ostringstream& o, const LegendEntry& e, double x, double y) {
   if (e.band) {
     o << "<rect x=\"" << Num(x) << "\" y=\"" << Num(y - 5) << "\" width=\"26\" height=\"10\" fill=\""
-      << e.band_color << "\" fill-opacity=\"0.25\" stroke=\"" << e.band_color << "\" stroke-opacity=\"0.6\"/>";
+      << e.band_color << "\" fill-opacity=\"0.25\" stroke=\"" << e.band_color
+      << "\" stroke-opacity=\"0.6\"/>";
     return;
   }
   const PlotSeries& s = *e.series;
@@ -291,16 +302,17 @@ void DrawPanel(std::ostringstream& o, const PlotPanel& panel, int panel_index, d
   o << "<g class=\"panel\">\n";
   // Title.
   if (!panel.title.empty())
-    o << "<text x=\"" << Num(0.5 * (left + right)) << "\" y=\"" << Num(cy + 20) << "\" font-size=\"" << kTitleFont
-      << "\" font-weight=\"bold\" text-anchor=\"middle\" fill=\"#222\">" << Escape(panel.title) << "</text>\n";
+    o << "<text x=\"" << Num(0.5 * (left + right)) << "\" y=\"" << Num(cy + 20) << "\" font-size=\""
+      << kTitleFont << "\" font-weight=\"bold\" text-anchor=\"middle\" fill=\"#222\">" << Escape(panel.title)
+      << "</text>\n";
   // Plot area background, grid, ticks.
-  o << "<rect x=\"" << Num(left) << "\" y=\"" << Num(top) << "\" width=\"" << Num(right - left) << "\" height=\""
-    << Num(bottom - top) << "\" fill=\"#ffffff\"/>\n";
+  o << "<rect x=\"" << Num(left) << "\" y=\"" << Num(top) << "\" width=\"" << Num(right - left)
+    << "\" height=\"" << Num(bottom - top) << "\" fill=\"#ffffff\"/>\n";
   for (const auto& t : ax.ticks) {
     const double px = ax.Map(t.value);
     const bool major = !t.label.empty();
-    o << "<line x1=\"" << Num(px) << "\" y1=\"" << Num(top) << "\" x2=\"" << Num(px) << "\" y2=\"" << Num(bottom)
-      << "\" stroke=\"" << (major ? "#e3e3e3" : "#f2f2f2") << "\" stroke-width=\"1\"/>";
+    o << "<line x1=\"" << Num(px) << "\" y1=\"" << Num(top) << "\" x2=\"" << Num(px) << "\" y2=\""
+      << Num(bottom) << "\" stroke=\"" << (major ? "#e3e3e3" : "#f2f2f2") << "\" stroke-width=\"1\"/>";
     o << "<line x1=\"" << Num(px) << "\" y1=\"" << Num(bottom) << "\" x2=\"" << Num(px) << "\" y2=\""
       << Num(bottom + (major ? 5 : 3)) << "\" stroke=\"#555\" stroke-width=\"1\"/>";
     if (major)
@@ -311,8 +323,8 @@ void DrawPanel(std::ostringstream& o, const PlotPanel& panel, int panel_index, d
   for (const auto& t : ay.ticks) {
     const double py = ay.Map(t.value);
     const bool major = !t.label.empty();
-    o << "<line x1=\"" << Num(left) << "\" y1=\"" << Num(py) << "\" x2=\"" << Num(right) << "\" y2=\"" << Num(py)
-      << "\" stroke=\"" << (major ? "#e3e3e3" : "#f2f2f2") << "\" stroke-width=\"1\"/>";
+    o << "<line x1=\"" << Num(left) << "\" y1=\"" << Num(py) << "\" x2=\"" << Num(right) << "\" y2=\""
+      << Num(py) << "\" stroke=\"" << (major ? "#e3e3e3" : "#f2f2f2") << "\" stroke-width=\"1\"/>";
     o << "<line x1=\"" << Num(left - (major ? 5 : 3)) << "\" y1=\"" << Num(py) << "\" x2=\"" << Num(left)
       << "\" y2=\"" << Num(py) << "\" stroke=\"#555\" stroke-width=\"1\"/>";
     if (major)
@@ -327,8 +339,8 @@ void DrawPanel(std::ostringstream& o, const PlotPanel& panel, int panel_index, d
   if (!panel.y_label.empty()) {
     const double yx = cx + 18, yy = 0.5 * (top + bottom);
     o << "<text x=\"" << Num(yx) << "\" y=\"" << Num(yy) << "\" font-size=\"" << kLabelFont
-      << "\" text-anchor=\"middle\" fill=\"#222\" transform=\"rotate(-90 " << Num(yx) << " " << Num(yy) << ")\">"
-      << Escape(panel.y_label) << "</text>\n";
+      << "\" text-anchor=\"middle\" fill=\"#222\" transform=\"rotate(-90 " << Num(yx) << " " << Num(yy)
+      << ")\">" << Escape(panel.y_label) << "</text>\n";
   }
 
   // Data, clipped to the plot area (widened by a marker so edge markers stay whole).
@@ -341,7 +353,8 @@ void DrawPanel(std::ostringstream& o, const PlotPanel& panel, int panel_index, d
     if (!ay.Usable(b.y_low) || !ay.Usable(b.y_high)) continue;
     const double y0 = ay.Map(std::max(b.y_low, ay.lo)), y1 = ay.Map(std::min(b.y_high, ay.hi));
     o << "<rect x=\"" << Num(left) << "\" y=\"" << Num(std::min(y0, y1)) << "\" width=\"" << Num(right - left)
-      << "\" height=\"" << Num(std::abs(y0 - y1)) << "\" fill=\"" << b.color << "\" fill-opacity=\"0.18\"/>\n";
+      << "\" height=\"" << Num(std::abs(y0 - y1)) << "\" fill=\"" << b.color
+      << "\" fill-opacity=\"0.18\"/>\n";
   }
   for (size_t i = 0; i < panel.series.size(); ++i) {
     const auto& s = panel.series[i];
@@ -377,8 +390,8 @@ void DrawPanel(std::ostringstream& o, const PlotPanel& panel, int panel_index, d
   }
   o << "</g>\n";
   // Frame over the data.
-  o << "<rect x=\"" << Num(left) << "\" y=\"" << Num(top) << "\" width=\"" << Num(right - left) << "\" height=\""
-    << Num(bottom - top) << "\" fill=\"none\" stroke=\"#555\" stroke-width=\"1\"/>\n";
+  o << "<rect x=\"" << Num(left) << "\" y=\"" << Num(top) << "\" width=\"" << Num(right - left)
+    << "\" height=\"" << Num(bottom - top) << "\" fill=\"none\" stroke=\"#555\" stroke-width=\"1\"/>\n";
 
   // Legend.
   if (!legend.empty() && panel.legend != LegendPlace::kNone) {
@@ -391,10 +404,11 @@ void DrawPanel(std::ostringstream& o, const PlotPanel& panel, int panel_index, d
         LegendPlace place;
         double x, y;
       };
-      const Corner corners[] = {{LegendPlace::kTopRight, right - inset - legend_w, top + inset},
-                                {LegendPlace::kTopLeft, left + inset, top + inset},
-                                {LegendPlace::kBottomRight, right - inset - legend_w, bottom - inset - legend_h},
-                                {LegendPlace::kBottomLeft, left + inset, bottom - inset - legend_h}};
+      const Corner corners[] = {
+          {LegendPlace::kTopRight, right - inset - legend_w, top + inset},
+          {LegendPlace::kTopLeft, left + inset, top + inset},
+          {LegendPlace::kBottomRight, right - inset - legend_w, bottom - inset - legend_h},
+          {LegendPlace::kBottomLeft, left + inset, bottom - inset - legend_h}};
       int best = -1, best_count = 0;
       for (int c = 0; c < 4; ++c) {
         if (panel.legend != LegendPlace::kAuto && panel.legend != corners[c].place) continue;
@@ -509,10 +523,12 @@ std::string RenderSvg(const PlotFigure& figure) {
   o << "<rect width=\"100%\" height=\"100%\" fill=\"#ffffff\"/>\n";
   if (!figure.title.empty())
     o << "<text x=\"" << Num(width / 2) << "\" y=\"24\" font-size=\"" << kFigureTitleFont
-      << "\" font-weight=\"bold\" text-anchor=\"middle\" fill=\"#111\">" << Escape(figure.title) << "</text>\n";
+      << "\" font-weight=\"bold\" text-anchor=\"middle\" fill=\"#111\">" << Escape(figure.title)
+      << "</text>\n";
   for (size_t i = 0; i < figure.panels.size(); ++i) {
     const int r = static_cast<int>(i) / cols, c = static_cast<int>(i) % cols;
-    DrawPanel(o, figure.panels[i], static_cast<int>(i), 5.0 + c * cell_w, title_h + r * cell_h, cell_w, cell_h);
+    DrawPanel(o, figure.panels[i], static_cast<int>(i), 5.0 + c * cell_w, title_h + r * cell_h, cell_w,
+              cell_h);
   }
   if (!figure.footnote.empty())
     o << "<text x=\"12\" y=\"" << Num(height - 8) << "\" font-size=\"10\" fill=\"#666\">"

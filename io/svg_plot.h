@@ -23,14 +23,14 @@ enum class LegendPlace { kAuto, kTopRight, kTopLeft, kBottomRight, kBottomLeft, 
 struct PlotSeries {
   std::string label;  ///< legend text; empty = not listed in the legend
   std::vector<double> x, y;
-  bool line = true;                 ///< join the points with a polyline
-  bool markers = false;             ///< draw a marker at each point
+  bool line = true;      ///< join the points with a polyline
+  bool markers = false;  ///< draw a marker at each point
   MarkerShape marker = MarkerShape::kCircle;
-  std::string color;                ///< CSS colour; empty = next colour of the figure palette
-  std::string dash;                 ///< SVG stroke-dasharray, e.g. "6 3"; empty = solid
+  std::string color;  ///< CSS colour; empty = next colour of the figure palette
+  std::string dash;   ///< SVG stroke-dasharray, e.g. "6 3"; empty = solid
   double line_width_px = 1.8;
   double marker_size_px = 7.0;
-  bool hollow_markers = false;      ///< open markers (white fill), e.g. for measured data
+  bool hollow_markers = false;            ///< open markers (white fill), e.g. for measured data
   std::vector<std::string> point_labels;  ///< optional text beside each point (same length as x or empty)
 
   static PlotSeries Line(std::string label, std::vector<double> x, std::vector<double> y);

@@ -33,7 +33,8 @@ std::vector<WaveSpectrum> BuildSpectra(const std::vector<SeaState>& seas) {
   return spectra;
 }
 
-DesignEvaluation EvaluateDesign(const RaoTable& rao, const HullExtent& hull, const std::vector<SeaState>& seas,
+DesignEvaluation EvaluateDesign(const RaoTable& rao, const HullExtent& hull,
+                                const std::vector<SeaState>& seas,
                                 const std::vector<PassengerPosition>& user_points,
                                 const EvaluationOptions& options) {
   return EvaluateDesign(rao, hull, BuildSpectra(seas), user_points, options);
@@ -44,7 +45,8 @@ DesignEvaluation EvaluateDesign(const RaoTable& rao, const HullExtent& hull,
                                 const std::vector<PassengerPosition>& user_points,
                                 const EvaluationOptions& options) {
   std::string e;
-  if (spectra.empty()) throw std::invalid_argument("seas: the sea list is empty; give at least one sea state");
+  if (spectra.empty())
+    throw std::invalid_argument("seas: the sea list is empty; give at least one sea state");
   if (!options.IsValid(&e)) throw std::invalid_argument(e);
   if (!hull.IsValid(&e)) throw std::invalid_argument(e);
   if (!IsValidRaoTable(rao, &e)) throw std::invalid_argument(e);

@@ -13,9 +13,9 @@ double Iso2631WfMagnitude(double f_hz) {
                w6 = kTwoPi * 0.10;
   const double q4 = 0.86, q5 = 0.80, q6 = 0.80;
   const double r2 = std::sqrt(2.0);
-  const C hh = s * s / (s * s + r2 * w1 * s + w1 * w1);            // high pass
-  const C hl = 1.0 / (s * s / (w2 * w2) + r2 * s / w2 + 1.0);       // low pass
-  const C ht = 1.0 / (s * s / (w4 * w4) + s / (q4 * w4) + 1.0);     // a–v transition, f3 = ∞
+  const C hh = s * s / (s * s + r2 * w1 * s + w1 * w1);          // high pass
+  const C hl = 1.0 / (s * s / (w2 * w2) + r2 * s / w2 + 1.0);    // low pass
+  const C ht = 1.0 / (s * s / (w4 * w4) + s / (q4 * w4) + 1.0);  // a–v transition, f3 = ∞
   const C hs = (s * s + w5 * s / q5 + w5 * w5) / (s * s + w6 * s / q6 + w6 * w6);  // upward step
   return std::abs(hh * hl * ht * hs);
 }

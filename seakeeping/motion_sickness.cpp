@@ -12,10 +12,14 @@ constexpr double kPi = 3.14159265358979323846;
 
 std::string MsiModelName(MsiModel model) {
   switch (model) {
-    case MsiModel::kLloyd: return "lloyd";
-    case MsiModel::kOHanlonMcCauley1974: return "ohanlon_mccauley_1974";
-    case MsiModel::kMcCauley1976: return "mccauley_1976";
-    case MsiModel::kIso2631Msdv: return "iso_2631";
+    case MsiModel::kLloyd:
+      return "lloyd";
+    case MsiModel::kOHanlonMcCauley1974:
+      return "ohanlon_mccauley_1974";
+    case MsiModel::kMcCauley1976:
+      return "mccauley_1976";
+    case MsiModel::kIso2631Msdv:
+      return "iso_2631";
   }
   return "?";
 }
@@ -97,10 +101,14 @@ double MotionSicknessIncidence(const PointMoments& m, const MsiOptions& o, doubl
   const double a = (o.statistic == AccelerationStatistic::kMeanAbsolute ? std::sqrt(2.0 / kPi) : 1.0) * sigma;
   const double a_g = a / g;
   switch (o.model) {
-    case MsiModel::kLloyd: return MsiLloyd(a_g, w);
-    case MsiModel::kOHanlonMcCauley1974: return MsiOHanlonMcCauley1974(a_g, w / (2.0 * kPi));
-    case MsiModel::kMcCauley1976: return MsiMcCauley1976(a_g, w / (2.0 * kPi), o.exposure_h * 60.0);
-    case MsiModel::kIso2631Msdv: break;
+    case MsiModel::kLloyd:
+      return MsiLloyd(a_g, w);
+    case MsiModel::kOHanlonMcCauley1974:
+      return MsiOHanlonMcCauley1974(a_g, w / (2.0 * kPi));
+    case MsiModel::kMcCauley1976:
+      return MsiMcCauley1976(a_g, w / (2.0 * kPi), o.exposure_h * 60.0);
+    case MsiModel::kIso2631Msdv:
+      break;
   }
   return 0.0;
 }

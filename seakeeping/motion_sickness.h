@@ -5,9 +5,9 @@
 //   MSI = 100 Φ((log10(|a|/g) − μ)/0.4),  μ = −0.819 + 2.32 (log10 ω_e)²,  ω_e in rad/s, 2-hour exposure,
 //   |a| = mean absolute acceleration = √(2/π) σ_a for a Gaussian process, ω_e = √(m4/m2) of the displacement
 //   spectrum at the point.
-// Options: the 1974 fit (O'Hanlon & McCauley, 2 h, f in Hz), McCauley et al. 1976 time-dependent form, and the
-// ISO 2631-1 motion sickness dose value with vomiting incidence VI = K_m·MSDV. The 1974/1976 coefficients and
-// K_m are quoted from memory in theory-notes §2.2–2.3 (unverified against the original reports).
+// Options: the 1974 fit (O'Hanlon & McCauley, 2 h, f in Hz), McCauley et al. 1976 time-dependent form, and
+// the ISO 2631-1 motion sickness dose value with vomiting incidence VI = K_m·MSDV. The 1974/1976 coefficients
+// and K_m are quoted from memory in theory-notes §2.2–2.3 (unverified against the original reports).
 #include <string>
 
 #include "seakeeping/point_response.h"
@@ -15,18 +15,18 @@
 namespace hullopt::sk {
 
 enum class MsiModel {
-  kLloyd,                 ///< O'Hanlon & McCauley, Lloyd form, 2 h (default)
-  kOHanlonMcCauley1974,   ///< 1974 fit, 2 h
-  kMcCauley1976,          ///< time-dependent form, exposure_h
-  kIso2631Msdv            ///< ISO 2631-1 W_f weighting, MSDV, VI = K_m·MSDV, exposure_h
+  kLloyd,                ///< O'Hanlon & McCauley, Lloyd form, 2 h (default)
+  kOHanlonMcCauley1974,  ///< 1974 fit, 2 h
+  kMcCauley1976,         ///< time-dependent form, exposure_h
+  kIso2631Msdv           ///< ISO 2631-1 W_f weighting, MSDV, VI = K_m·MSDV, exposure_h
 };
 /// "lloyd", "ohanlon_mccauley_1974", "mccauley_1976", "iso_2631".
 std::string MsiModelName(MsiModel model);
 
 /// Characteristic frequency of the motion used in the MSI formula.
 enum class MsiFrequency {
-  kDisplacementM4M2,          ///< √(m4/m2) of the displacement spectrum (default, theory-notes §2.1)
-  kAccelerationZeroCrossing   ///< √(m6/m4): zero-crossing frequency of the acceleration
+  kDisplacementM4M2,         ///< √(m4/m2) of the displacement spectrum (default, theory-notes §2.1)
+  kAccelerationZeroCrossing  ///< √(m6/m4): zero-crossing frequency of the acceleration
 };
 std::string MsiFrequencyName(MsiFrequency f);  ///< "displacement_m4_m2", "acceleration_zero_crossing"
 
@@ -52,7 +52,8 @@ struct MsiOptions {
 double StandardNormalCdf(double z);
 /// Lloyd form [%]: mean absolute acceleration [g], characteristic encounter frequency [rad/s].
 double MsiLloyd(double mean_abs_accel_g, double omega_rad_s);
-/// 1974 fit [%]: acceleration [g], frequency [Hz]. z = 2.128 log10 a − 9.277 log10 f − 5.809 (log10 f)² − 1.851.
+/// 1974 fit [%]: acceleration [g], frequency [Hz]. z = 2.128 log10 a − 9.277 log10 f − 5.809 (log10 f)²
+/// − 1.851.
 double MsiOHanlonMcCauley1974(double accel_g, double f_hz);
 /// McCauley et al. 1976 [%]: 100 Φ(z_a) Φ(z_t), z_t = 1.134 z_a + 1.989 log10 t − 2.904, t [min].
 double MsiMcCauley1976(double accel_g, double f_hz, double exposure_min);

@@ -1,15 +1,16 @@
 #pragma once
 // Passenger positions along the centreline, x [m] forward of the CG (ARCHITECTURE §3; Davis & Holloway 2003):
-// "lcg" at the CG, "transom" at the transom, "forward" 60 % of the LCG-to-transom distance forward of the LCG.
-// The design's average MSI is the mean over these three. Users may add named points anywhere on the hull.
+// "lcg" at the CG, "transom" at the transom, "forward" 60 % of the LCG-to-transom distance forward of the
+// LCG. The design's average MSI is the mean over these three. Users may add named points anywhere on the
+// hull.
 #include <string>
 #include <vector>
 
 namespace hullopt::sk {
 
 struct PassengerPosition {
-  std::string name;         ///< "forward", "lcg", "transom" or a user name
-  double x_from_cg_m = 0.0; ///< [m] forward of the CG (negative aft)
+  std::string name;          ///< "forward", "lcg", "transom" or a user name
+  double x_from_cg_m = 0.0;  ///< [m] forward of the CG (negative aft)
 };
 
 /// Longitudinal extent of the hull about the CG (options struct).

@@ -51,8 +51,8 @@ SeaResponse::SeaResponse(const RaoTable& rao, const WaveSpectrum& spectrum, cons
     m0_inside += weight;
     if (weight == 0.0) continue;
     // Clamp against round-off at the table ends.
-    const double we = std::clamp(HeadSeaEncounterFrequency(w, U, g), rao.omega_e_rad_s.front(),
-                                 rao.omega_e_rad_s.back());
+    const double we =
+        std::clamp(HeadSeaEncounterFrequency(w, U, g), rao.omega_e_rad_s.front(), rao.omega_e_rad_s.back());
     const ComplexRao r = InterpolateRao(rao, we);
     const std::complex<double> x3 = r.heave;
     const std::complex<double> x5 = (w * w / g) * r.pitch;  // X5/A = k · X5/(kA)
@@ -77,8 +77,8 @@ PointMoments SeaResponse::Moments(double x) const {
   return p;
 }
 
-std::vector<EncounterSpectrumSample> HeadSeaEncounterSpectrum(const WaveSpectrum& spectrum, double U, double g,
-                                                              double we_min, double we_max, int n) {
+std::vector<EncounterSpectrumSample> HeadSeaEncounterSpectrum(const WaveSpectrum& spectrum, double U,
+                                                              double g, double we_min, double we_max, int n) {
   std::vector<EncounterSpectrumSample> out;
   n = std::max(n, 2);
   for (int i = 0; i < n; ++i) {
@@ -123,7 +123,10 @@ double PeakEncounterFrequency(const WaveSpectrum& spectrum, double U, double g) 
   const double r = 0.5 * (std::sqrt(5.0) - 1.0);
   double c = b - r * (b - a), d = a + r * (b - a);
   for (int it = 0; it < 60; ++it) {
-    if (f(c) > f(d)) b = d; else a = c;
+    if (f(c) > f(d))
+      b = d;
+    else
+      a = c;
     c = b - r * (b - a), d = a + r * (b - a);
   }
   return HeadSeaEncounterFrequency(0.5 * (a + b), U, g);

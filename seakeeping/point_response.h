@@ -1,18 +1,19 @@
 #pragma once
 // Vertical motion of a point on the centreline, x [m] forward of the CG, in one irregular head sea, from the
-// complex RAOs (theory-notes §3.3): s = x3 − x·x5, so the displacement transfer function per unit wave amplitude
-// is H(ω) = X3/A − x·k·(X5/(kA)) with k = ω²/g of the incident wave; S_s(ω_e) = |H|² S_ζ(ω_e), a = −ω_e² s,
-// S_a = ω_e⁴ S_s. Phases matter: heave and pitch add or cancel depending on x.
+// complex RAOs (theory-notes §3.3): s = x3 − x·x5, so the displacement transfer function per unit wave
+// amplitude is H(ω) = X3/A − x·k·(X5/(kA)) with k = ω²/g of the incident wave; S_s(ω_e) = |H|² S_ζ(ω_e), a =
+// −ω_e² s, S_a = ω_e⁴ S_s. Phases matter: heave and pitch add or cancel depending on x.
 //
-// Moments m_n = ∫ ω_eⁿ S_s(ω_e) dω_e are integrated in wave frequency ω, which is exact and regular in head seas
-// (theory-notes §3.2): m_n = ∫ ω_e(ω)ⁿ |H(ω_e(ω))|² S_ζ(ω) dω, composite Simpson, with the RAOs interpolated in
-// complex form on ω_e. Because |H|² is quadratic in x, the sums are stored once per sea as three coefficient
-// sets and every point costs O(1).
+// Moments m_n = ∫ ω_eⁿ S_s(ω_e) dω_e are integrated in wave frequency ω, which is exact and regular in head
+// seas (theory-notes §3.2): m_n = ∫ ω_e(ω)ⁿ |H(ω_e(ω))|² S_ζ(ω) dω, composite Simpson, with the RAOs
+// interpolated in complex form on ω_e. Because |H|² is quadratic in x, the sums are stored once per sea as
+// three coefficient sets and every point costs O(1).
 //
 // Truncation: the integral covers only the RAO table's frequency range ∩ [0.2 ωp, 12 ωp] (the spectrum is
 // < 1e-300 of its peak below 0.2 ωp; above 12 ωp the wave energy fraction is < 1e-4). Wave energy outside the
-// integrated range is reported as truncated_wave_energy_fraction(); callers warn when it is large. The RAO table
-// should span the spectrum: its upper end bounds the acceleration moment, which weights high ω_e by ω_e⁴.
+// integrated range is reported as truncated_wave_energy_fraction(); callers warn when it is large. The RAO
+// table should span the spectrum: its upper end bounds the acceleration moment, which weights high ω_e by
+// ω_e⁴.
 #include <string>
 #include <vector>
 
@@ -28,10 +29,10 @@ struct ResponseOptions {
 
 /// Moments of the vertical displacement spectrum S_s(ω_e) at one point.
 struct PointMoments {
-  double m0 = 0.0;  ///< [m²]        displacement variance
-  double m2 = 0.0;  ///< [m²/s²]     velocity variance
-  double m4 = 0.0;  ///< [m²/s⁴]     acceleration variance σ_a²
-  double m6 = 0.0;  ///< [m²/s⁶]
+  double m0 = 0.0;         ///< [m²]        displacement variance
+  double m2 = 0.0;         ///< [m²/s²]     velocity variance
+  double m4 = 0.0;         ///< [m²/s⁴]     acceleration variance σ_a²
+  double m6 = 0.0;         ///< [m²/s⁶]
   double m4_iso_wf = 0.0;  ///< [m²/s⁴] ISO 2631-1 W_f weighted acceleration variance ∫|W_f|² ω_e⁴ S_s dω_e
 
   double rms_displacement_m() const;

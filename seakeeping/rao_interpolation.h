@@ -8,7 +8,8 @@
 namespace hullopt::sk {
 
 /// At least 2 frequencies; all vectors the same length; ω and ω_e finite, > 0, strictly increasing;
-/// ω_e = ω + ω²U/g within 1e-4 relative (CSV round-off); RAOs finite; U ≥ 0, g > 0. The error names the index and value.
+/// ω_e = ω + ω²U/g within 1e-4 relative (CSV round-off); RAOs finite; U ≥ 0, g > 0. The error names the index
+/// and value.
 bool IsValidRaoTable(const RaoTable& table, std::string* error);
 
 struct ComplexRao {

@@ -1,7 +1,7 @@
 #pragma once
 // Long-crested wave spectra S_ζ(ω) [m²s/rad] of wave frequency ω [rad/s]: JONSWAP in the DNV-RP-C205 form and
-// the ITTC/Bretschneider (Pierson–Moskowitz shape) two-parameter spectrum, both renormalised numerically so that
-// 4√m0 = Hs exactly (theory-notes §3.1: the DNV factor A_γ alone is off by ~0.1 %).
+// the ITTC/Bretschneider (Pierson–Moskowitz shape) two-parameter spectrum, both renormalised numerically so
+// that 4√m0 = Hs exactly (theory-notes §3.1: the DNV factor A_γ alone is off by ~0.1 %).
 //
 // A sea state is given by Hs with either the zero-crossing period Tz = 2π√(m0/m2) or the peak period Tp.
 // Tz/Tp depends on γ only and is computed numerically from the spectrum shape (0.7774 at γ = 3.3, 0.7104 at
@@ -21,10 +21,10 @@ std::string SpectrumName(SpectrumType type);
 /// One sea state (options struct). Exactly one of Tz_s, Tp_s is given (the other NaN).
 struct SeaState {
   SpectrumType spectrum = SpectrumType::kJonswap;
-  double Hs_m = 0.0;      ///< [m] significant wave height 4√m0
-  double Tz_s;            ///< [s] zero-crossing period 2π√(m0/m2), or NaN when Tp_s is given
-  double Tp_s;            ///< [s] peak period, or NaN when Tz_s is given
-  double gamma = 3.3;     ///< [-] JONSWAP peak enhancement; must be 1 for Bretschneider
+  double Hs_m = 0.0;   ///< [m] significant wave height 4√m0
+  double Tz_s;         ///< [s] zero-crossing period 2π√(m0/m2), or NaN when Tp_s is given
+  double Tp_s;         ///< [s] peak period, or NaN when Tz_s is given
+  double gamma = 3.3;  ///< [-] JONSWAP peak enhancement; must be 1 for Bretschneider
 
   SeaState();
   static SeaState JonswapTz(double Hs_m, double Tz_s, double gamma = 3.3);

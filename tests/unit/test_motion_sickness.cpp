@@ -1,7 +1,6 @@
 // MSI formulas against hand-computed values of the published forms (theory-notes §2), the ISO 2631-1 W_f
 // weighting against its parameters, and option checks.
 #include <catch2/catch.hpp>
-
 #include <cmath>
 #include <string>
 

@@ -1,7 +1,6 @@
 // SVG plot writer: the document is well-formed XML with one <svg> root, carries every title, axis label and
 // legend text (escaped), has nice tick labels on linear and log axes, and skips non-finite points.
 #include <catch2/catch.hpp>
-
 #include <cctype>
 #include <cmath>
 #include <fstream>
@@ -67,7 +66,8 @@ bool WellFormed(const std::string& s, std::string* why) {
     const bool closing = s.compare(i, 2, "</") == 0;
     size_t k = i + (closing ? 2 : 1);
     const size_t name_start = k;
-    while (k < s.size() && (std::isalnum(static_cast<unsigned char>(s[k])) || s[k] == '-' || s[k] == ':')) ++k;
+    while (k < s.size() && (std::isalnum(static_cast<unsigned char>(s[k])) || s[k] == '-' || s[k] == ':'))
+      ++k;
     const std::string name = s.substr(name_start, k - name_start);
     if (name.empty()) return fail("empty tag name");
     bool self_closing = false;
@@ -83,7 +83,8 @@ bool WellFormed(const std::string& s, std::string* why) {
       }
       if (closing) return fail("attribute in closing tag");
       const size_t a0 = k;
-      while (k < s.size() && (std::isalnum(static_cast<unsigned char>(s[k])) || s[k] == '-' || s[k] == ':')) ++k;
+      while (k < s.size() && (std::isalnum(static_cast<unsigned char>(s[k])) || s[k] == '-' || s[k] == ':'))
+        ++k;
       if (k == a0 || k >= s.size() || s[k] != '=') return fail("bad attribute");
       ++k;
       if (k >= s.size() || s[k] != '"') return fail("unquoted attribute");
@@ -132,8 +133,7 @@ io::PlotFigure SampleFigure() {
   auto& p2 = fig.AddPanel("Heave RAO <measured vs computed>", "λ/L [-]", "|x3|/A [m/m]");
   p2.series.push_back(io::PlotSeries::LineMarkers("computed", {0.5, 1.0, 1.5, 2.0, 3.0, 4.0},
                                                   {0.1, 0.6, 1.3, 1.1, 1.02, 1.0}));
-  auto measured = io::PlotSeries::Markers("tank (Delft 372)", {0.6, 1.2, 1.8, 2.4},
-                                          {0.2, 0.9, 1.25, 1.05});
+  auto measured = io::PlotSeries::Markers("tank (Delft 372)", {0.6, 1.2, 1.8, 2.4}, {0.2, 0.9, 1.25, 1.05});
   measured.hollow_markers = true;
   measured.marker = io::MarkerShape::kSquare;
   p2.series.push_back(measured);
@@ -174,10 +174,10 @@ TEST_CASE("a multi-panel figure is well-formed SVG with all labels", "[plot]") {
   INFO(why);
   REQUIRE(WellFormed(svg, &why));
   CHECK(svg.find("<svg xmlns=\"http://www.w3.org/2000/svg\"") != std::string::npos);
-  for (const char* text : {"Sample figure: spectra &amp; RAOs", "Encounter spectra", "ω_e [rad/s]",
-                           "S(ω_e) [m²s/rad]", "Hs 3 m, Tz 7.5 s", "Hs 0.5 m, Tz 5 s",
-                           "Heave RAO &lt;measured vs computed&gt;", "λ/L [-]", "tank (Delft 372)",
-                           "paper range", "f [Hz]", "a [m/s²]", "JONSWAP γ = 3.3"}) {
+  for (const char* text :
+       {"Sample figure: spectra &amp; RAOs", "Encounter spectra", "ω_e [rad/s]", "S(ω_e) [m²s/rad]",
+        "Hs 3 m, Tz 7.5 s", "Hs 0.5 m, Tz 5 s", "Heave RAO &lt;measured vs computed&gt;", "λ/L [-]",
+        "tank (Delft 372)", "paper range", "f [Hz]", "a [m/s²]", "JONSWAP γ = 3.3"}) {
     INFO(text);
     CHECK(svg.find(text) != std::string::npos);
   }

@@ -1,7 +1,6 @@
-// Wave spectra: 4√m0 = Hs, Tz/Tp ratios of the DNV JONSWAP shape against theory-notes §3.1 (computed there with
-// mpmath), Bretschneider against its closed form, and bad sea-state inputs.
+// Wave spectra: 4√m0 = Hs, Tz/Tp ratios of the DNV JONSWAP shape against theory-notes §3.1 (computed there
+// with mpmath), Bretschneider against its closed form, and bad sea-state inputs.
 #include <catch2/catch.hpp>
-
 #include <cmath>
 #include <string>
 
@@ -30,9 +29,9 @@ double LogTrapezoidMoment(const WaveSpectrum& s, int n) {
 
 TEST_CASE("4 sqrt(m0) equals Hs within 0.5 % for JONSWAP and Bretschneider", "[spectrum]") {
   constexpr double kHsTolerance = 0.005;  // issue 5 acceptance: 0.5 %
-  for (const SeaState& sea : {SeaState::JonswapTz(0.5, 5.0), SeaState::JonswapTz(3.0, 7.5),
-                              SeaState::JonswapTp(2.0, 9.0, 1.5), SeaState::JonswapTz(1.0, 5.5, 7.0),
-                              SeaState::BretschneiderTz(4.0, 9.0)}) {
+  for (const SeaState& sea :
+       {SeaState::JonswapTz(0.5, 5.0), SeaState::JonswapTz(3.0, 7.5), SeaState::JonswapTp(2.0, 9.0, 1.5),
+        SeaState::JonswapTz(1.0, 5.5, 7.0), SeaState::BretschneiderTz(4.0, 9.0)}) {
     const WaveSpectrum s(sea);
     const double hs = 4.0 * std::sqrt(LogTrapezoidMoment(s, 0));
     INFO("Hs " << sea.Hs_m << " gamma " << sea.gamma);

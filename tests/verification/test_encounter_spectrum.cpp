@@ -1,7 +1,6 @@
 // Head-sea encounter spectra: the modal encounter frequencies of the reference paper's Fig. 7 seas at 40 kn,
 // energy conservation under ω → ω_e, and the inverse frequency map.
 #include <catch2/catch.hpp>
-
 #include <cmath>
 
 #include "seakeeping/encounter_frequency.h"

@@ -2,7 +2,6 @@
 // encounter frequency, the sign and phase of s = x3 − x·x5, the quadratic-in-x shortcut against direct
 // integration of the response spectrum, and the design evaluation (positions, mean, bad inputs).
 #include <catch2/catch.hpp>
-
 #include <cmath>
 #include <complex>
 #include <string>
@@ -52,8 +51,8 @@ double EncounterMoment(const WaveSpectrum& s, int n, double a, double b) {
 
 TEST_CASE("constant heave RAO = 1: sigma_a^2 is the integral of omega_e^4 S over omega_e", "[response]") {
   constexpr double kQuadratureTolerance = 1e-4;  // Simpson (800) vs trapezoid (2e5) of a smooth integrand
-  const auto t = MakeTable(0.2, 2.5, 40, [](double, double) { return cd(1.0, 0.0); },
-                           [](double, double) { return cd(0.0, 0.0); });
+  const auto t = MakeTable(
+      0.2, 2.5, 40, [](double, double) { return cd(1.0, 0.0); }, [](double, double) { return cd(0.0, 0.0); });
   const WaveSpectrum s(SeaState::JonswapTz(1.0, 5.5));
   const SeaResponse r(t, s);
   REQUIRE(r.omega_min() == Approx(0.2));  // 0.2 ωp = 0.18 < table start
@@ -65,25 +64,29 @@ TEST_CASE("constant heave RAO = 1: sigma_a^2 is the integral of omega_e^4 S over
     CHECK(m.m0 == Approx(EncounterMoment(s, 0, 0.2, 2.5)).epsilon(kQuadratureTolerance));
   }
   // Truncation report: the wave energy above 2.5 rad/s is the ω⁻⁵ tail, fraction ≈ A_γ·1.25·(ωp/2.5)⁴ with
-  // A_γ = 0.65734 (γ = 3.3); below 0.2 rad/s there is none. 3 % covers exp(−1.25(ωp/ω)⁴) ≈ 0.985 at 2.5 rad/s.
+  // A_γ = 0.65734 (γ = 3.3); below 0.2 rad/s there is none. 3 % covers exp(−1.25(ωp/ω)⁴) ≈ 0.985 at 2.5
+  // rad/s.
   constexpr double kTailTolerance = 0.03;
   CHECK(r.truncated_wave_energy_fraction() ==
         Approx(0.65734 * 1.25 * std::pow(s.omega_peak() / 2.5, 4)).epsilon(kTailTolerance));
 }
 
 TEST_CASE("pitch sign and phase: s = x3 - x x5 with x5 positive bow-down", "[response]") {
-  // X5/A = c (pitch per kA = c/k), in phase with a unit heave: the point x = 1/c forward of the CG stays still
-  // (bow-down pitch lowers it exactly as heave lifts it); x = −1/c aft moves twice the heave.
+  // X5/A = c (pitch per kA = c/k), in phase with a unit heave: the point x = 1/c forward of the CG stays
+  // still (bow-down pitch lowers it exactly as heave lifts it); x = −1/c aft moves twice the heave.
   constexpr double kC = 0.05;  // [rad/m]
   // 400 nodes: linear interpolation of 1/ω² between nodes is exact to ~1e-5 relative.
   constexpr double kCancelTolerance = 1e-6;  // residual m4 relative to the heave-only m4
   constexpr double kRelTolerance = 1e-4;
-  const auto in_phase = MakeTable(0.2, 2.5, 400, [](double, double) { return cd(1.0, 0.0); },
-                                  [](double w, double) { return cd(kC * kG / (w * w), 0.0); });
-  const auto heave_only = MakeTable(0.2, 2.5, 400, [](double, double) { return cd(1.0, 0.0); },
-                                    [](double, double) { return cd(0.0, 0.0); });
-  const auto quadrature = MakeTable(0.2, 2.5, 400, [](double, double) { return cd(1.0, 0.0); },
-                                    [](double w, double) { return cd(0.0, kC * kG / (w * w)); });
+  const auto in_phase = MakeTable(
+      0.2, 2.5, 400, [](double, double) { return cd(1.0, 0.0); },
+      [](double w, double) { return cd(kC * kG / (w * w), 0.0); });
+  const auto heave_only = MakeTable(
+      0.2, 2.5, 400, [](double, double) { return cd(1.0, 0.0); },
+      [](double, double) { return cd(0.0, 0.0); });
+  const auto quadrature = MakeTable(
+      0.2, 2.5, 400, [](double, double) { return cd(1.0, 0.0); },
+      [](double w, double) { return cd(0.0, kC * kG / (w * w)); });
   const WaveSpectrum s(SeaState::JonswapTz(3.0, 7.5));
   const double m4_heave = SeaResponse(heave_only, s).Moments(0.0).m4;
   const SeaResponse r(in_phase, s);
@@ -124,8 +127,9 @@ TEST_CASE("quadratic-in-x moments agree with direct integration of the accelerat
 }
 
 TEST_CASE("design evaluation: standard positions, mean, user points", "[response][evaluation]") {
-  const auto t = MakeTable(0.2, 2.5, 40, [](double, double) { return cd(1.0, 0.0); },
-                           [](double w, double) { return cd(0.0, 0.02 * kG / (w * w)); });
+  const auto t = MakeTable(
+      0.2, 2.5, 40, [](double, double) { return cd(1.0, 0.0); },
+      [](double w, double) { return cd(0.0, 0.02 * kG / (w * w)); });
   const HullExtent hull{20.0, 30.0};
   const auto eval = EvaluateDesign(t, hull, {SeaState::JonswapTz(1.0, 5.5), SeaState::JonswapTz(3.0, 7.5)},
                                    {{"bridge", 25.0}});
@@ -161,8 +165,8 @@ TEST_CASE("design evaluation: standard positions, mean, user points", "[response
 }
 
 TEST_CASE("design evaluation refuses bad inputs with clear messages", "[evaluation][bad-input]") {
-  const auto t = MakeTable(0.2, 2.5, 40, [](double, double) { return cd(1.0, 0.0); },
-                           [](double, double) { return cd(0.0, 0.0); });
+  const auto t = MakeTable(
+      0.2, 2.5, 40, [](double, double) { return cd(1.0, 0.0); }, [](double, double) { return cd(0.0, 0.0); });
   const HullExtent hull{20.0, 30.0};
   auto message = [&](auto&& call) {
     try {
@@ -174,20 +178,25 @@ TEST_CASE("design evaluation refuses bad inputs with clear messages", "[evaluati
   };
   CHECK(message([&] { EvaluateDesign(t, hull, std::vector<SeaState>{}); }).find("sea list is empty") !=
         std::string::npos);
-  CHECK(message([&] { EvaluateDesign(t, hull, {SeaState::JonswapTz(-1.0, 7.5)}); }).find("seas[0]: Hs_m = -1") !=
-        std::string::npos);
-  CHECK(message([&] { EvaluateDesign(t, hull, {SeaState::JonswapTz(3.0, 7.5)}, {{"mast", 31.0}}); })
-            .find("'mast': x_from_cg_m = 31 is outside the hull") != std::string::npos);
-  CHECK(message([&] { EvaluateDesign(t, hull, {SeaState::JonswapTz(3.0, 7.5)}, {{"aft", -20.5}}); })
-            .find("outside the hull") != std::string::npos);
-  CHECK(message([&] { EvaluateDesign(t, hull, {SeaState::JonswapTz(3.0, 7.5)}, {{"mean", 1.0}}); })
-            .find("reserved") != std::string::npos);
-  CHECK(message([&] { EvaluateDesign(t, HullExtent{0.0, 30.0}, {SeaState::JonswapTz(3.0, 7.5)}); })
-            .find("CG-to-transom 0 m") != std::string::npos);
+  CHECK(message([&] {
+          EvaluateDesign(t, hull, {SeaState::JonswapTz(-1.0, 7.5)});
+        }).find("seas[0]: Hs_m = -1") != std::string::npos);
+  CHECK(message([&] {
+          EvaluateDesign(t, hull, {SeaState::JonswapTz(3.0, 7.5)}, {{"mast", 31.0}});
+        }).find("'mast': x_from_cg_m = 31 is outside the hull") != std::string::npos);
+  CHECK(message([&] {
+          EvaluateDesign(t, hull, {SeaState::JonswapTz(3.0, 7.5)}, {{"aft", -20.5}});
+        }).find("outside the hull") != std::string::npos);
+  CHECK(message([&] {
+          EvaluateDesign(t, hull, {SeaState::JonswapTz(3.0, 7.5)}, {{"mean", 1.0}});
+        }).find("reserved") != std::string::npos);
+  CHECK(message([&] {
+          EvaluateDesign(t, HullExtent{0.0, 30.0}, {SeaState::JonswapTz(3.0, 7.5)});
+        }).find("CG-to-transom 0 m") != std::string::npos);
   auto broken = t;
   broken.pitch.pop_back();
-  CHECK(message([&] { EvaluateDesign(broken, hull, {SeaState::JonswapTz(3.0, 7.5)}); })
-            .find("same length") != std::string::npos);
+  CHECK(message([&] { EvaluateDesign(broken, hull, {SeaState::JonswapTz(3.0, 7.5)}); }).find("same length") !=
+        std::string::npos);
   broken = t;
   broken.omega_e_rad_s[3] *= 1.1;
   CHECK(message([&] { EvaluateDesign(broken, hull, {SeaState::JonswapTz(3.0, 7.5)}); }).find("row 3") !=
