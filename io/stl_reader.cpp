@@ -124,20 +124,21 @@ hull::Demihull SliceStl(const StlMesh& mesh, int stations, double draught_m, con
   for (int i = 0; i < stations; ++i) {
     const double xn = x0 + len * i / (stations - 1);
     const double xc = i == stations - 1 ? xn - nudge : xn + nudge;
-    // Cut segments (port side y >= 0 kept after chaining).
-    std::vector<std::array<double, 4>> seg;  // y0 z0 y1 z1
+    // Cut segments. Each edge is interpolated in a canonical direction (lexicographically smaller end first)
+    // so the two triangles sharing it produce bit-identical points, which then chain by exact comparison.
+    using P = std::pair<double, double>;  // (y, z)
+    std::vector<std::array<P, 2>> seg;
     for (const auto& t : mesh.triangles) {
-      std::array<double, 2> pts[2];
+      P pts[2];
       int k = 0;
       for (int e = 0; e < 3 && k < 2; ++e) {
-        const auto& a = t[e];
-        const auto& b = t[(e + 1) % 3];
-        if ((a[0] - xc) * (b[0] - xc) < 0.0) {
-          const double f = (xc - a[0]) / (b[0] - a[0]);
-          pts[k++] = {a[1] + f * (b[1] - a[1]), a[2] + f * (b[2] - a[2])};
-        }
+        auto a = t[e], b = t[(e + 1) % 3];
+        if (!((a[0] - xc) * (b[0] - xc) < 0.0)) continue;
+        if (b < a) std::swap(a, b);
+        const double f = (xc - a[0]) / (b[0] - a[0]);
+        pts[k++] = {a[1] + f * (b[1] - a[1]), a[2] + f * (b[2] - a[2])};
       }
-      if (k == 2) seg.push_back({pts[0][0], pts[0][1], pts[1][0], pts[1][1]});
+      if (k == 2 && pts[0] != pts[1]) seg.push_back({pts[0], pts[1]});
     }
     hull::Station st;
     st.x_m = xn;
@@ -145,66 +146,71 @@ hull::Demihull SliceStl(const StlMesh& mesh, int stations, double draught_m, con
       body.stations.push_back(st);
       continue;
     }
-    // Chain segments through shared end points (quantised to tolerate round-off).
-    const double q = 1e-9 * len;
-    auto key = [&](double y, double z) { return std::make_pair(std::llround(y / q), std::llround(z / q)); };
-    std::multimap<std::pair<long long, long long>, size_t> ends;
-    for (size_t s = 0; s < seg.size(); ++s) {
-      ends.emplace(key(seg[s][0], seg[s][1]), s);
-      ends.emplace(key(seg[s][2], seg[s][3]), s);
+    double breadth = 0.0;
+    for (const auto& sg : seg) breadth = std::max({breadth, std::fabs(sg[0].first), std::fabs(sg[1].first)});
+    const double ytol = 1e-9 * std::max(breadth, 1e-300);
+    std::multimap<P, size_t> ends;
+    for (size_t k = 0; k < seg.size(); ++k) {
+      ends.emplace(seg[k][0], k);
+      ends.emplace(seg[k][1], k);
     }
-    // Start at the lowest point on or nearest the centreline on the port side.
-    size_t start = 0;
-    int start_end = 0;
-    double best = INFINITY;
-    for (size_t s = 0; s < seg.size(); ++s)
-      for (int e = 0; e < 2; ++e) {
-        const double y = seg[s][2 * e], z = seg[s][2 * e + 1];
-        const double score = z + 1e3 * std::fabs(y);  // centreline first, then lowest
-        if (y > -q && score < best) {
-          best = score;
-          start = s;
-          start_end = e;
-        }
+    // The keel: the lowest point on the centreline (|y| within round-off of 0), else the lowest port point.
+    P start{0.0, INFINITY};
+    bool on_cl = false;
+    for (const auto& kv : ends) {
+      const P& p = kv.first;
+      const bool cl = std::fabs(p.first) <= ytol;
+      if (p.first < -ytol) continue;
+      if ((cl && !on_cl) || (cl == on_cl && p.second < start.second)) {
+        start = p;
+        on_cl = cl;
       }
-    std::vector<bool> used(seg.size(), false);
-    double y = seg[start][2 * start_end], z = seg[start][2 * start_end + 1];
-    st.y_m.push_back(std::max(0.0, y));
-    st.z_m.push_back(z);
-    size_t cur = start;
-    int from = start_end;
-    // Walk: leave the start point along the segment that goes to y >= 0.
-    const int other0 = 1 - start_end;
-    if (seg[start][2 * other0] <
-        -q) {  // this segment goes to starboard: find the other one at the start point
-      auto range = ends.equal_range(key(y, z));
-      for (auto it = range.first; it != range.second; ++it)
-        if (it->second != start) {
-          cur = it->second;
-          from = key(seg[cur][0], seg[cur][1]) == key(y, z) ? 0 : 1;
-          break;
-        }
     }
-    while (true) {
+    std::vector<bool> used(seg.size(), false);
+    st.y_m.push_back(std::max(0.0, start.first));
+    st.z_m.push_back(start.second);
+    P at = start;
+    // First step: the incident segment leading furthest to port.
+    size_t cur = seg.size();
+    double best_y = -INFINITY;
+    for (auto it = ends.lower_bound(at); it != ends.end() && it->first == at; ++it) {
+      const auto& sg = seg[it->second];
+      const P& other = sg[0] == at ? sg[1] : sg[0];
+      if (other.first >= -ytol && other.first + other.second > best_y) {  // to port and upwards
+        best_y = other.first + other.second;
+        cur = it->second;
+      }
+    }
+    while (cur < seg.size()) {
       used[cur] = true;
-      const int to = 1 - from;
-      const double ny = seg[cur][2 * to], nz = seg[cur][2 * to + 1];
-      if (ny < -q) break;  // crossed to starboard (over a deck)
-      if (nz < st.z_m.back() - 1e-9 * len) {
+      const P next = seg[cur][0] == at ? seg[cur][1] : seg[cur][0];
+      if (next.first < -ytol) break;  // crossed to starboard (over a deck)
+      if (next.second < st.z_m.back() - 1e-9 * len) {
         std::ostringstream m;
-        m << what << ": STL section at x = " << xn << " m turns downwards at z = " << nz
+        m << what << ": STL section at x = " << xn << " m turns downwards at z = " << next.second
           << " m (re-entrant section): stations must rise monotonically from the keel to the deck";
         throw InputError(m.str());
       }
-      st.y_m.push_back(std::max(0.0, ny));
-      st.z_m.push_back(std::max(nz, st.z_m.back()));
-      auto range = ends.equal_range(key(ny, nz));
-      size_t next = seg.size();
-      for (auto it = range.first; it != range.second; ++it)
-        if (!used[it->second]) next = it->second;
-      if (next == seg.size()) break;
-      from = key(seg[next][0], seg[next][1]) == key(ny, nz) ? 0 : 1;
-      cur = next;
+      st.y_m.push_back(std::max(0.0, next.first));
+      st.z_m.push_back(std::max(next.second, st.z_m.back()));
+      at = next;
+      // Next: the unused incident segment that climbs most (then goes furthest to port); where both sides
+      // of a zero-breadth keel or stem meet, this keeps the walk going up rather than back down.
+      cur = seg.size();
+      P best{-INFINITY, -INFINITY};  // (z, y) of the candidate's far end
+      for (auto it = ends.lower_bound(at); it != ends.end() && it->first == at; ++it) {
+        if (used[it->second]) continue;
+        const auto& sg = seg[it->second];
+        const P& other = sg[0] == at ? sg[1] : sg[0];
+        if (other.first < -ytol) continue;
+        if (P{other.second, other.first} > best) {
+          best = {other.second, other.first};
+          cur = it->second;
+        }
+      }
+      if (cur == seg.size()) {  // only starboard continuations left: the section ends here
+        break;
+      }
     }
     if (st.z_m.front() <= draught_m) {
       ++wet;

@@ -64,7 +64,7 @@ bool Check(bool ok, const char* name, double value, const std::string& rule, std
 bool DesignVariables::IsValid(std::string* error) const {
   const auto fin = [](double v) { return std::isfinite(v); };
   // clang-format off
-  return Check(fin(displacement_t) && displacement_t > 0, "displacement_t", displacement_t, "must be > 0 t", error) &&
+  const bool ok = Check(fin(displacement_t) && displacement_t > 0, "displacement_t", displacement_t, "must be > 0 t", error) &&
       Check(fin(rho_kg_m3) && rho_kg_m3 > 0, "rho_kg_m3", rho_kg_m3, "must be > 0 kg/m^3", error) &&
       Check(fin(L_over_B) && L_over_B > 1, "L_over_B", L_over_B, "must be > 1", error) &&
       Check(fin(B_over_T) && B_over_T > 0, "B_over_T", B_over_T, "must be > 0", error) &&
@@ -87,9 +87,18 @@ bool DesignVariables::IsValid(std::string* error) const {
       Check(fin(outrigger_offset_over_L) && outrigger_offset_over_L > 0, "outrigger_offset_over_L", outrigger_offset_over_L, "must be > 0", error) &&
       Check(fin(freeboard_over_T) && freeboard_over_T > 0, "freeboard_over_T", freeboard_over_T, "must be > 0", error) &&
       Check(stations >= 11 && stations % 2 == 1, "stations", stations, "must be odd and >= 11 (midships must be a station)", error) &&
-      Check(section_points >= 8, "section_points", section_points, "must be >= 8", error) &&
-      Check((type == HullType::kSwath) == (section_style == SectionStyle::kSwathBulb), "section_style", 0, "swath_bulb sections go with type swath, and a swath needs swath_bulb sections (got type " + ToString(type) + ", style " + ToString(section_style) + ")", error);
+      Check(section_points >= 8, "section_points", section_points, "must be >= 8", error);
+
   // clang-format on
+  if (ok && (type == HullType::kSwath) != (section_style == SectionStyle::kSwathBulb)) {
+    if (error)
+      *error = "section_style = " + ToString(section_style) +
+               ": swath_bulb sections go with type swath, and a swath "
+               "needs swath_bulb sections (type is " +
+               ToString(type) + ")";
+    return false;
+  }
+  return ok;
 }
 
 }  // namespace hullopt::hull
