@@ -18,6 +18,8 @@ constexpr double kPi = 3.14159265358979323846;
 // targets); 6 passes bring it to round-off level for the Table 1 hulls.
 constexpr int kRetargetPasses = 6;
 constexpr double kRetargetTol = 1e-8;
+// Relative area tolerance of the SWATH bulb solves (round-off level: the areas are the hydrostatics' own).
+constexpr double kAreaTol = 1e-13;
 // Bow flare: the deck edge half-breadth above a station gains this fraction of (B/2 - b/2).
 constexpr double kFlare = 0.3;
 // Trihull outrigger form (fixed; the outriggers' size and position are design variables).
@@ -30,6 +32,32 @@ std::string Num(double v) {
   std::ostringstream s;
   s << v;
   return s.str();
+}
+
+// Root of an increasing function f on [a, c] with f(a) < 0 < f(c), by the Illinois variant of regula falsi
+// (a handful of evaluations for the smooth area functions here).
+template <class F>
+double IncreasingRoot(F f, double a, double c, double rel_tol) {
+  double fa = f(a), fc = f(c);
+  int side = 0;
+  double x = 0.5 * (a + c);
+  for (int it = 0; it < 100; ++it) {
+    x = (a * fc - c * fa) / (fc - fa);
+    const double fx = f(x);
+    if (std::fabs(fx) < rel_tol || c - a < 1e-15 * std::fabs(c)) break;
+    if (fx < 0.0) {
+      a = x;
+      fa = fx;
+      if (side == -1) fc *= 0.5;
+      side = -1;
+    } else {
+      c = x;
+      fc = fx;
+      if (side == 1) fa *= 0.5;
+      side = 1;
+    }
+  }
+  return x;
 }
 
 // Shape inputs of one body (dimensions of that body).
@@ -108,12 +136,8 @@ Demihull BuildBody(const BodySpec& b, CurveCache* cache) {
           "impossible SWATH: midship area coefficient Cm = Cb/Cp = " + Num(b.Cm) + " must lie between " +
           Num(lo / (b.B * b.T)) + " (strut only) and " + Num(hi / (b.B * b.T)) +
           " (bulb filling the draught) for B/T = " + Num(b.B / b.T) + " and strut_ratio = " + Num(peak));
-    double a = 1e-6 * b.T, c = b.T;
-    for (int it = 0; it < 200 && c - a > 1e-15 * b.T; ++it) {
-      const double m = 0.5 * (a + c);
-      (swath_area(t, b.B / 2, m) < Am ? a : c) = m;
-    }
-    bulb_h_mid = 0.5 * (a + c);
+    bulb_h_mid = IncreasingRoot([&](double h) { return swath_area(t, b.B / 2, h) / Am - 1.0; }, 1e-6 * b.T,
+                                b.T, kAreaTol);
   }
 
   Demihull body;
@@ -147,31 +171,32 @@ Demihull BuildBody(const BodySpec& b, CurveCache* cache) {
     }
     const double lam_min = 1e-3;
     if (t.area_m2 < swath_area(t, lam_min * b.B / 2, lam_min * bulb_h_mid)) {
-      t.draught_m = std::min(b.T, t.area_m2 / (0.25 * kPi * 2 * t.half_beam_m));
-      body.stations.push_back(RoundBilgeSection(t));
+      // Less area than a full-depth strut: a strut with a chined bottom down to the keel while that can hold
+      // it (area coefficient >= 0.5), else a rounded strut foot that rises off the keel.
+      const double sigma_full = t.area_m2 / (2 * t.half_beam_m * b.T);
+      if (sigma_full >= 0.5) {
+        body.stations.push_back(HardChineSection(t));
+      } else {
+        t.draught_m = t.area_m2 / (0.25 * kPi * 2 * t.half_beam_m);
+        body.stations.push_back(RoundBilgeSection(t));
+      }
       continue;
     }
     double e = b.B / 2, h = bulb_h_mid;
     if (t.area_m2 <= swath_area(t, b.B / 2, bulb_h_mid)) {
-      double a = lam_min, c = 1.0;
-      for (int it = 0; it < 200 && c - a > 1e-15; ++it) {
-        const double m = 0.5 * (a + c);
-        (swath_area(t, m * b.B / 2, m * bulb_h_mid) < t.area_m2 ? a : c) = m;
-      }
-      e = 0.5 * (a + c) * b.B / 2;
-      h = 0.5 * (a + c) * bulb_h_mid;
+      const double lam = IncreasingRoot(
+          [&](double m) { return swath_area(t, m * b.B / 2, m * bulb_h_mid) / t.area_m2 - 1.0; }, lam_min,
+          1.0, kAreaTol);
+      e = lam * b.B / 2;
+      h = lam * bulb_h_mid;
     } else {  // more area than the midship bulb: a taller bulb of the same breadth
       if (t.area_m2 > swath_area(t, b.B / 2, b.T))
         throw std::domain_error(
             "impossible SWATH: section at x = " + Num(t.x_m) + " m needs area " + Num(t.area_m2) +
             " m^2, more than a bulb of breadth B filling the draught (the sectional area curve peaks at " +
             Num(sac.peak) + " x midships; move LCB_pct_L towards 0 or lower Cp)");
-      double a = bulb_h_mid, c = b.T;
-      for (int it = 0; it < 200 && c - a > 1e-15 * b.T; ++it) {
-        const double m = 0.5 * (a + c);
-        (swath_area(t, b.B / 2, m) < t.area_m2 ? a : c) = m;
-      }
-      h = 0.5 * (a + c);
+      h = IncreasingRoot([&](double m) { return swath_area(t, b.B / 2, m) / t.area_m2 - 1.0; }, bulb_h_mid,
+                         b.T, kAreaTol);
     }
     body.stations.push_back(SwathSection(t, e, h, kBulbExponent));
   }
