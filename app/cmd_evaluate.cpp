@@ -62,6 +62,8 @@ DesignInput ReadDesign(io::YamlMap& m, const std::string& config_file, double g,
   DesignInput in;
   in.where = m.Where("rao_csv");
   const std::string csv = DataPath(m.String("rao_csv"), config_file);
+  // Record the file actually read, absolute, so config.resolved.yaml re-runs from any folder.
+  m.resolved()["rao_csv"] = std::filesystem::absolute(csv).lexically_normal().string();
   in.design.name = m.String("name", DefaultName(csv));
   if (in.design.name.empty()) m.Fail("name", "must not be empty");
   if (!single) {

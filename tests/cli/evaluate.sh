@@ -62,6 +62,10 @@ grep -q '"peak_omega_e_rad_s"' "$TMP/out1/summary.json" || fail "summary peak"
 grep -q 'Tz_s: 7.5' "$TMP/out1/config.resolved.yaml" && fail "resolved config should keep the line form" || true
 grep -q 'sea_state_line' "$TMP/out1/config.resolved.yaml" || fail "resolved config"
 grep -q '<svg' "$TMP/out1/msi_vs_Hs.svg" || fail "svg"
+# The resolved config re-runs from another folder and gives the same table.
+(cd / && "$HULLOPT" evaluate "$TMP/out1/config.resolved.yaml" --out "$TMP/out1b" > /dev/null) ||
+  fail "re-run of config.resolved.yaml"
+cmp -s "$TMP/out1/msi.csv" "$TMP/out1b/msi.csv" || fail "re-run gives a different msi.csv"
 
 cat > "$TMP/two.yaml" <<YAML
 # hullopt evaluate
