@@ -43,7 +43,8 @@ void BM_StudySeasAndMsi(benchmark::State& state) {  // spectra built inside, as 
   for (auto _ : state) {
     const auto spectra = sk::BuildSpectra(seas);
     double sum = 0.0;
-    for (const auto& t : tables) sum += sk::EvaluateDesign(t, {20.0, 25.0}, spectra, {}, {}).seas[5].mean.msi_pct;
+    for (const auto& t : tables)
+      sum += sk::EvaluateDesign(t, {20.0, 25.0}, spectra, {}, {}).seas[5].mean.msi_pct;
     benchmark::DoNotOptimize(sum);
   }
 }
