@@ -95,18 +95,25 @@ std::string LogLabel(int k) {
 }
 
 void BuildAxis(Axis* axis, AxisScale scale, double data_lo, double data_hi, double fixed_lo, double fixed_hi,
-               bool include_zero) {
+               bool include_zero, double pad) {
   axis->scale = scale;
   axis->ticks.clear();
   if (scale == AxisScale::kLinear) {
+    if (pad > 0.0 && std::isfinite(data_lo) && std::isfinite(data_hi)) {
+      const double span = data_hi > data_lo ? data_hi - data_lo : std::max(std::abs(data_lo), 1.0);
+      const bool was_non_negative = data_lo >= 0.0;
+      data_lo -= pad * span;
+      data_hi += pad * span;
+      if (was_non_negative && data_lo < 0.0) data_lo = 0.0;  // do not invent negative values
+    }
     double lo = std::isfinite(fixed_lo) ? fixed_lo : data_lo;
     double hi = std::isfinite(fixed_hi) ? fixed_hi : data_hi;
     if (!std::isfinite(lo) || !std::isfinite(hi)) lo = 0.0, hi = 1.0;
     if (include_zero && !std::isfinite(fixed_lo)) lo = std::min(lo, 0.0);
     if (include_zero && !std::isfinite(fixed_hi)) hi = std::max(hi, 0.0);
     if (hi <= lo) {
-      const double pad = lo == 0.0 ? 1.0 : 0.1 * std::abs(lo);
-      lo -= pad, hi += pad;
+      const double widen = lo == 0.0 ? 1.0 : 0.1 * std::abs(lo);
+      lo -= widen, hi += widen;
     }
     auto ticks = NiceLinearTicks(lo, hi);
     const double step = ticks.size() > 1 ? ticks[1] - ticks[0] : hi - lo;
@@ -294,8 +301,18 @@ void DrawPanel(std::ostringstream& o, const PlotPanel& panel, int panel_index, d
   const double left = cx + kMarginLeft, top = cy + kMarginTop, bottom = cy + h - kMarginBottom;
   const double right = cx + w - kMarginRight - (outside ? legend_w + 10.0 : 0.0);
   Axis ax, ay;
-  BuildAxis(&ax, panel.x_scale, xlo, xhi, panel.x_min, panel.x_max, false);
-  BuildAxis(&ay, panel.y_scale, ylo, yhi, panel.y_min, panel.y_max, panel.y_include_zero);
+  BuildAxis(&ax, panel.x_scale, xlo, xhi, panel.x_min, panel.x_max, false, panel.pad_fraction);
+  if (!panel.x_ticks.empty()) {
+    ax.ticks.clear();
+    for (size_t i = 0; i < panel.x_ticks.size(); ++i) {
+      const double t = panel.x_ticks[i];
+      if (!ax.Usable(t) || t < std::min(ax.lo, ax.hi) || t > std::max(ax.lo, ax.hi)) continue;
+      char buf[32];
+      std::snprintf(buf, sizeof buf, "%g", t);
+      ax.ticks.push_back({t, i < panel.x_tick_labels.size() ? Escape(panel.x_tick_labels[i]) : buf});
+    }
+  }
+  BuildAxis(&ay, panel.y_scale, ylo, yhi, panel.y_min, panel.y_max, panel.y_include_zero, panel.pad_fraction);
   ax.p0 = left, ax.p1 = right;
   ay.p0 = bottom, ay.p1 = top;
 
@@ -514,7 +531,11 @@ std::string RenderSvg(const PlotFigure& figure) {
   const double cell_w = figure.panel_width_px + extra, cell_h = figure.panel_height_px;
   const double title_h = figure.title.empty() ? 6.0 : 34.0;
   const double foot_h = figure.footnote.empty() ? 6.0 : 24.0;
-  const double width = cols * cell_w + 10.0, height = title_h + rows * cell_h + foot_h;
+  // Wide enough for the titles (bold glyphs ~8 % wider than the layout estimate).
+  const double title_w = 1.08 * TextWidth(figure.title, kFigureTitleFont) + 40.0;
+  const double foot_w = TextWidth(figure.footnote, 10.0) + 30.0;
+  const double width = std::max({cols * cell_w + 10.0, title_w, foot_w});
+  const double height = title_h + rows * cell_h + foot_h;
 
   std::ostringstream o;
   o << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n";

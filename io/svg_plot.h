@@ -55,6 +55,13 @@ struct PlotPanel {
   /// Axis limits; NaN = from the data, widened to nice tick values.
   double x_min, x_max, y_min, y_max;
   bool y_include_zero = false;  ///< linear y axis: extend the automatic range to 0
+  /// Linear automatic ranges: widen the data range by this fraction on each side before rounding to ticks,
+  /// so markers do not sit on the frame (scatter plots: ~0.06).
+  double pad_fraction = 0.0;
+  /// Explicit x ticks (e.g. design numbers) with optional labels (same length; empty = the numbers); empty =
+  /// automatic nice ticks.
+  std::vector<double> x_ticks;
+  std::vector<std::string> x_tick_labels;
   LegendPlace legend = LegendPlace::kAuto;
   std::vector<PlotSeries> series;
   std::vector<PlotBand> bands;
