@@ -379,6 +379,8 @@ CsCalibrationResult CalibrateCs(const CsRaoModel& model, const std::vector<Calib
     ++evaluations;
     if (!PredictionOk(after, cc.points.size()))
       throw std::domain_error("Cs calibration: the RAO model failed at the fitted Cs = " + Fmt(Cs));
+    res.predictions_before.push_back(before[c]);
+    res.predictions_after.push_back(after);
     for (const Slot& s : layouts[c]) {
       CsPointResidual r;
       r.case_index = c;

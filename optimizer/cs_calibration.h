@@ -110,6 +110,8 @@ struct CsCalibrationResult {
   double reduced_chi_square = 0.0;           ///< Σ r²/(n − p) at the solution (no robust loss)
   std::vector<CsPointResidual> residuals;
   std::vector<CsPeakChange> peaks;
+  std::vector<RaoPrediction> predictions_before;  ///< per case, at Cs_initial (for plots)
+  std::vector<RaoPrediction> predictions_after;   ///< per case, at the fitted Cs
   bool converged = false;                    ///< Ceres reported convergence
   bool covariance_ok = false;                ///< Ceres could compute the covariance (else std errors are 0)
   std::vector<std::string> warnings;         ///< e.g. a parameter at its bound, a negative Cs from a + b·p
