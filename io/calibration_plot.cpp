@@ -9,7 +9,7 @@
 namespace hullopt::io {
 namespace {
 
-constexpr double kPanelW = 460, kPanelH = 330, kLeft = 60, kTop = 50, kGap = 90, kBottom = 110;
+constexpr double kPanelW = 460, kPanelH = 330, kLeft = 60, kTop = 50, kGap = 90, kBottom = 80;
 const char* kColours[] = {"#1f77b4", "#d62728", "#2ca02c", "#9467bd", "#ff7f0e", "#8c564b"};
 
 std::string F(double v) {

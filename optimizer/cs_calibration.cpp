@@ -119,7 +119,7 @@ class PredictionCache {
   std::size_t points_;
   std::atomic<int>* evaluations_;
   std::mutex mutex_;
-  std::array<Entry, 4> entries_;  // Cs, Cs + h, Cs − h and the trial step
+  std::array<Entry, 8> entries_;  // Cs and Cs ± h per parameter (5 values for a + b·p), the trial step
   std::size_t next_ = 0;
 };
 

@@ -97,6 +97,9 @@ TEST_CASE("single Cs: weighted linear least squares in closed form", "[calibrati
   CHECK(r.converged);
   CHECK(r.covariance_ok);
   CHECK(r.case_Cs[0] == r.parameters[0]);
+  // The per-case prediction cache: one model call per distinct Cs (base and ±h per Jacobian, trial steps), not
+  // one per residual block. Without it this fit (8 blocks) would take 8× as many calls.
+  CHECK(r.model_evaluations < 8 * 3);
   REQUIRE(r.residuals.size() == 8);
   CHECK(r.residuals[1].quantity == "pitch");
   CHECK(r.residuals[1].residual_after ==
