@@ -28,10 +28,11 @@ opt::CsRaoModel MakeCalibrationModel(io::YamlMap& root, const io::CalibrateConfi
     if (hull.synthetic) {
       part.model = opt::MakeSyntheticOscillatorModel(*hull.synthetic, mine);
     } else {
-      // TODO(lead): build the strip model of this hull from root's hull/mass/water/solver sections (or from the
-      // hull entry's own config), precompute its Cs-independent kernels once per speed, and return
+      // TODO(lead): build the strip model of this hull from root's hull/mass/water/solver sections (or from
+      // the hull entry's own config), precompute its Cs-independent kernels once per speed, and return
       // [=](double Cs, int local) { 2×2 solve per measured frequency of mine[local] }.
-      throw io::InputError(root.file() + ": calibrate" + (hull.name.empty() ? "" : " hull '" + hull.name + "'") +
+      throw io::InputError(root.file() + ": calibrate" +
+                           (hull.name.empty() ? "" : " hull '" + hull.name + "'") +
                            ": the strip solver is not wired to 'hullopt calibrate' in this version; give "
                            "calibrate.model.synthetic_oscillator (a test/demo model) to exercise the fit");
     }

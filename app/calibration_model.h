@@ -1,5 +1,6 @@
 #pragma once
-// The RAO model of `hullopt calibrate`: the one place where the ship-motion solver is plugged into the Cs fit.
+// The RAO model of `hullopt calibrate`: the one place where the ship-motion solver is plugged into the Cs
+// fit.
 #include <vector>
 
 #include "io/calibrate_config.h"

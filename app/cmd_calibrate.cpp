@@ -103,7 +103,8 @@ void RunCalibrate(const std::string& config_file, const std::string& out_dir) {
 
 void AddCalibrateCommand(CLI::App& app) {
   auto* cmd = app.add_subcommand(
-      "calibrate", "Fit the sectional damping coefficient Cs to measured heave and pitch RAOs (tank RAO CSV files)");
+      "calibrate",
+      "Fit the sectional damping coefficient Cs to measured heave and pitch RAOs (tank RAO CSV files)");
   auto config = std::make_shared<std::string>();
   auto out = std::make_shared<std::string>();
   cmd->add_option("CONFIG", *config, "YAML config with a 'calibrate:' section")->required();

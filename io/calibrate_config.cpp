@@ -56,7 +56,9 @@ CalibrateConfig ReadCalibrateConfig(YamlMap& root) {
     cal.Skip("speeds_Fn");
     YamlMap speed = root.Map("speed");
     if (!speed.Has("Fn")) {
-      speed.Fail(speed.Has("kn") ? "kn" : speed.Has("m_s") ? "m_s" : "Fn",
+      speed.Fail(speed.Has("kn")    ? "kn"
+                 : speed.Has("m_s") ? "m_s"
+                                    : "Fn",
                  "calibrate matches the data's Fn column: give the speed as Fn (e.g. speed: { Fn: 0.75 })");
     }
     cfg.speeds_Fn = {speed.Number("Fn")};
@@ -76,17 +78,20 @@ CalibrateConfig ReadCalibrateConfig(YamlMap& root) {
   o.pitch_weight = w.Number("pitch", 1.0);
   if (o.heave_weight < 0) w.Fail("heave", "must be >= 0 (0 leaves heave out of the fit)");
   if (o.pitch_weight < 0) w.Fail("pitch", "must be >= 0 (0 leaves pitch out of the fit)");
-  if (o.heave_weight == 0 && o.pitch_weight == 0) w.Fail("heave", "heave and pitch weights are both 0: nothing to fit");
+  if (o.heave_weight == 0 && o.pitch_weight == 0)
+    w.Fail("heave", "heave and pitch weights are both 0: nothing to fit");
   w.Finish();
   o.residual_scale = cal.Choice("residual", {"absolute", "relative"}, "absolute") == "absolute"
                          ? opt::CsResidualScale::kAbsolute
                          : opt::CsResidualScale::kRelative;
   YamlMap loss = cal.MapOrEmpty("loss");
   const std::string type = loss.Choice("type", {"none", "huber", "cauchy"}, "none");
-  o.loss = type == "none" ? opt::CsRobustLoss::kNone : type == "huber" ? opt::CsRobustLoss::kHuber
-                                                                        : opt::CsRobustLoss::kCauchy;
+  o.loss = type == "none"    ? opt::CsRobustLoss::kNone
+           : type == "huber" ? opt::CsRobustLoss::kHuber
+                             : opt::CsRobustLoss::kCauchy;
   o.loss_scale = loss.Number("scale", 1.0);
-  if (!(o.loss_scale > 0)) loss.Fail("scale", "must be > 0 (the residual size where the loss starts to down-weight)");
+  if (!(o.loss_scale > 0))
+    loss.Fail("scale", "must be > 0 (the residual size where the loss starts to down-weight)");
   loss.Finish();
   o.use_phases = cal.Boolean("use_phases", false);
   o.Cs_initial = cal.Number("Cs_initial", o.Cs_initial);
@@ -126,8 +131,9 @@ CalibrateConfig ReadCalibrateConfig(YamlMap& root) {
     cal.Skip("model");
   }
   if (o.mode == opt::CsFitMode::kLinearInParameter && cfg.hulls.size() < 2) {
-    cal.Fail("mode", "linear_in_parameter fits Cs = a + b*p across hulls: list at least two 'hulls' with "
-                     "different 'parameter'");
+    cal.Fail("mode",
+             "linear_in_parameter fits Cs = a + b*p across hulls: list at least two 'hulls' with "
+             "different 'parameter'");
   }
   cal.Finish();
   return cfg;

@@ -1,8 +1,8 @@
 #pragma once
 // The `calibrate:` section of a config (and the speeds it fits), read strictly through YamlMap.
 //
-//   speed: { Fn: 0.75 }                 # the speed the data must have; several: calibrate.speeds_Fn: [0.5, 0.75]
-//   calibrate:
+//   speed: { Fn: 0.75 }                 # the speed the data must have; several: calibrate.speeds_Fn: [0.5,
+//   0.75] calibrate:
 //     data: [data/delft372/delft372_tank_rao_fn075.csv]   # one hull (the config's own) ...
 //     hulls:                            # ... or several hulls (needed for mode linear_in_parameter)
 //       - { name: A, parameter: 1.5, data: [a.csv], model: {...} }
@@ -31,22 +31,22 @@
 namespace hullopt::io {
 
 struct CalibrateHull {
-  std::string name;                       ///< "" for the single-hull form
-  double parameter = 0.0;                 ///< p of Cs = a + b·p
-  std::vector<std::string> data_files;    ///< tank RAO CSV files (paths as resolved)
+  std::string name;                                          ///< "" for the single-hull form
+  double parameter = 0.0;                                    ///< p of Cs = a + b·p
+  std::vector<std::string> data_files;                       ///< tank RAO CSV files (paths as resolved)
   std::optional<opt::SyntheticOscillatorOptions> synthetic;  ///< test/demo model, when given
 };
 
 struct CalibrateConfig {
-  std::vector<double> speeds_Fn;          ///< [-] speeds the data may have
+  std::vector<double> speeds_Fn;  ///< [-] speeds the data may have
   std::string parameter_name = "p";
   opt::CsCalibrationOptions options;
-  std::vector<CalibrateHull> hulls;       ///< one for the `data:` form
+  std::vector<CalibrateHull> hulls;  ///< one for the `data:` form
 };
 
 /// Reads `speed` (or `calibrate.speeds_Fn`) and `calibrate` from the root mapping (keys are marked consumed;
-/// the caller calls root.Finish()). Data paths that do not exist relative to the working folder but do relative
-/// to the config file's folder are resolved there. Throws InputError with file, line, key and rule.
+/// the caller calls root.Finish()). Data paths that do not exist relative to the working folder but do
+/// relative to the config file's folder are resolved there. Throws InputError with file, line, key and rule.
 CalibrateConfig ReadCalibrateConfig(YamlMap& root);
 
 }  // namespace hullopt::io

@@ -9,7 +9,9 @@
 namespace hullopt::io {
 namespace {
 
-nlohmann::json Peak(const opt::RaoPeak& p) { return {{"x", p.x}, {"value", p.value}, {"at_edge", p.at_edge}}; }
+nlohmann::json Peak(const opt::RaoPeak& p) {
+  return {{"x", p.x}, {"value", p.value}, {"at_edge", p.at_edge}};
+}
 
 std::string F(double v, const char* f = "%.6g") {
   char b[32];
@@ -25,7 +27,8 @@ std::string CalibrationJson(const CalibrateConfig& config, const std::vector<opt
   json j;
   j["hullopt_version"] = kVersion;
   j["conventions"] =
-      "heave |x3|/A [m/m], pitch |x5|/(kA) [-], k = omega^2/g, phases [deg] lead positive relative to the wave "
+      "heave |x3|/A [m/m], pitch |x5|/(kA) [-], k = omega^2/g, phases [deg] lead positive relative to the "
+      "wave "
       "crest at the CG; residuals weighted (see residual_scale and weights)";
   j["mode"] = opt::ToString(r.mode);
   if (r.mode == opt::CsFitMode::kSingle) {
@@ -40,7 +43,8 @@ std::string CalibrationJson(const CalibrateConfig& config, const std::vector<opt
   j["reduced_chi_square"] = r.reduced_chi_square;
   j["residual_variance"] = r.residual_variance;
   j["uncertainty_convention"] =
-      "std_error = sqrt(diag((J^T J)^-1) * s2), Ceres covariance at the solution (robustified Jacobian with a loss), "
+      "std_error = sqrt(diag((J^T J)^-1) * s2), Ceres covariance at the solution (robustified Jacobian with "
+      "a loss), "
       "s2 = 2*final_cost/(n - p); reduced_chi_square = sum(r^2)/(n - p) and rms_residual = sqrt(sum(r^2)/n) "
       "without the robust loss";
   j["num_residuals"] = r.num_residuals;
@@ -55,16 +59,21 @@ std::string CalibrationJson(const CalibrateConfig& config, const std::vector<opt
   j["parameter_name"] = config.parameter_name;
   json params = json::array();
   for (std::size_t i = 0; i < r.parameters.size(); ++i) {
-    params.push_back({{"name", r.parameter_names[i]}, {"value", r.parameters[i]},
+    params.push_back({{"name", r.parameter_names[i]},
+                      {"value", r.parameters[i]},
                       {"std_error", r.parameter_std_errors[i]}});
   }
   j["parameters"] = params;
   j["covariance"] = r.covariance;
   json jc = json::array();
   for (std::size_t c = 0; c < cases.size(); ++c) {
-    json e = {{"label", cases[c].label}, {"hull", cases[c].hull}, {"Fn", cases[c].Fn},
-              {"hull_parameter", cases[c].hull_parameter}, {"points", cases[c].points.size()},
-              {"Cs", r.case_Cs[c]}, {"Cs_std_error", r.case_Cs_std_error[c]}};
+    json e = {{"label", cases[c].label},
+              {"hull", cases[c].hull},
+              {"Fn", cases[c].Fn},
+              {"hull_parameter", cases[c].hull_parameter},
+              {"points", cases[c].points.size()},
+              {"Cs", r.case_Cs[c]},
+              {"Cs_std_error", r.case_Cs_std_error[c]}};
     json peaks = json::object();
     for (const auto& pk : r.peaks) {
       if (pk.case_index != static_cast<int>(c)) continue;
@@ -81,9 +90,14 @@ std::string CalibrationJson(const CalibrateConfig& config, const std::vector<opt
   j["cases"] = jc;
   json res = json::array();
   for (const auto& p : r.residuals) {
-    res.push_back({{"case", p.case_index}, {"point", p.point_index}, {"source", p.source},
-                   {"quantity", p.quantity}, {"measured", p.measured}, {"computed_before", p.computed_before},
-                   {"computed_after", p.computed_after}, {"residual_before", p.residual_before},
+    res.push_back({{"case", p.case_index},
+                   {"point", p.point_index},
+                   {"source", p.source},
+                   {"quantity", p.quantity},
+                   {"measured", p.measured},
+                   {"computed_before", p.computed_before},
+                   {"computed_after", p.computed_after},
+                   {"residual_before", p.residual_before},
                    {"residual_after", p.residual_after}});
   }
   j["residuals"] = res;
@@ -94,7 +108,8 @@ std::string CalibrationJson(const CalibrateConfig& config, const std::vector<opt
   return j.dump(2) + "\n";
 }
 
-std::string CalibratedSolverYaml(const CalibrateConfig& config, const std::vector<opt::CalibrationCase>& cases,
+std::string CalibratedSolverYaml(const CalibrateConfig& config,
+                                 const std::vector<opt::CalibrationCase>& cases,
                                  const opt::CsCalibrationResult& r, int c) {
   std::ostringstream s;
   s << "# hullopt " << kVersion << " calibrate: sectional damping coefficient Cs fitted to tank RAOs\n"

@@ -35,15 +35,17 @@ std::string Escape(const std::string& s) {
 
 }  // namespace
 
-std::string CalibrationPlotSvg(const std::vector<opt::CalibrationCase>& cases, const opt::CsCalibrationResult& r,
-                               double Cs_initial) {
+std::string CalibrationPlotSvg(const std::vector<opt::CalibrationCase>& cases,
+                               const opt::CsCalibrationResult& r, double Cs_initial) {
   bool all_l = true;
   for (const auto& c : cases)
     for (const auto& p : c.points) all_l = all_l && p.has_lambda_over_L;
   auto xof = [&](const opt::TankRaoPoint& p) { return all_l ? p.lambda_over_L : p.omega_e_rad_s; };
-  const std::string xlabel = all_l ? "wave length / ship length  λ/L [-]" : "encounter frequency  ω_e [rad/s]";
+  const std::string xlabel =
+      all_l ? "wave length / ship length  λ/L [-]" : "encounter frequency  ω_e [rad/s]";
 
-  const double width = kLeft + 2 * kPanelW + kGap + 30, height = kTop + kPanelH + kBottom + 22.0 * cases.size();
+  const double width = kLeft + 2 * kPanelW + kGap + 30,
+               height = kTop + kPanelH + kBottom + 22.0 * cases.size();
   std::ostringstream s;
   s << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << width << "\" height=\"" << height
     << "\" font-family=\"sans-serif\" font-size=\"12\">\n"
@@ -63,9 +65,10 @@ std::string CalibrationPlotSvg(const std::vector<opt::CalibrationCase>& cases, c
         const auto& p = cases[c].points[i];
         xmin = std::min(xmin, xof(p));
         xmax = std::max(xmax, xof(p));
-        ymax = std::max({ymax, q == 0 ? p.heave_amp : p.pitch_amp,
-                         std::abs(q == 0 ? r.predictions_before[c].heave[i] : r.predictions_before[c].pitch[i]),
-                         std::abs(q == 0 ? r.predictions_after[c].heave[i] : r.predictions_after[c].pitch[i])});
+        ymax =
+            std::max({ymax, q == 0 ? p.heave_amp : p.pitch_amp,
+                      std::abs(q == 0 ? r.predictions_before[c].heave[i] : r.predictions_before[c].pitch[i]),
+                      std::abs(q == 0 ? r.predictions_after[c].heave[i] : r.predictions_after[c].pitch[i])});
       }
     }
     if (!(xmax > xmin)) {
@@ -94,7 +97,8 @@ std::string CalibrationPlotSvg(const std::vector<opt::CalibrationCase>& cases, c
     }
     s << "<text x=\"" << x0 + kPanelW / 2 << "\" y=\"" << y0 + kPanelH + 36 << "\" text-anchor=\"middle\">"
       << xlabel << "</text>\n";
-    s << "<text x=\"" << x0 + kPanelW / 2 << "\" y=\"" << y0 - 8 << "\" text-anchor=\"middle\" font-size=\"14\">"
+    s << "<text x=\"" << x0 + kPanelW / 2 << "\" y=\"" << y0 - 8
+      << "\" text-anchor=\"middle\" font-size=\"14\">"
       << (q == 0 ? "heave |x3|/A [m/m]" : "pitch |x5|/(kA) [-]") << "</text>\n";
 
     for (std::size_t c = 0; c < cases.size(); ++c) {
@@ -102,17 +106,20 @@ std::string CalibrationPlotSvg(const std::vector<opt::CalibrationCase>& cases, c
       const auto& pts = cases[c].points;
       std::vector<std::size_t> order(pts.size());
       std::iota(order.begin(), order.end(), 0);
-      std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return xof(pts[a]) < xof(pts[b]); });
+      std::sort(order.begin(), order.end(),
+                [&](std::size_t a, std::size_t b) { return xof(pts[a]) < xof(pts[b]); });
       for (int stage = 0; stage < 2; ++stage) {
         const opt::RaoPrediction& pr = stage == 0 ? r.predictions_before[c] : r.predictions_after[c];
-        s << "<polyline fill=\"none\" stroke=\"" << col << "\" stroke-width=\"" << (stage == 0 ? 1.2 : 2.0) << "\""
-          << (stage == 0 ? " stroke-dasharray=\"6,4\"" : "") << " points=\"";
-        for (std::size_t i : order) s << X(xof(pts[i])) << "," << Y(std::abs(q == 0 ? pr.heave[i] : pr.pitch[i])) << " ";
+        s << "<polyline fill=\"none\" stroke=\"" << col << "\" stroke-width=\"" << (stage == 0 ? 1.2 : 2.0)
+          << "\"" << (stage == 0 ? " stroke-dasharray=\"6,4\"" : "") << " points=\"";
+        for (std::size_t i : order)
+          s << X(xof(pts[i])) << "," << Y(std::abs(q == 0 ? pr.heave[i] : pr.pitch[i])) << " ";
         s << "\"/>\n";
       }
       for (std::size_t i : order) {
-        s << "<circle cx=\"" << X(xof(pts[i])) << "\" cy=\"" << Y(q == 0 ? pts[i].heave_amp : pts[i].pitch_amp)
-          << "\" r=\"3.5\" fill=\"white\" stroke=\"" << col << "\" stroke-width=\"1.5\"/>\n";
+        s << "<circle cx=\"" << X(xof(pts[i])) << "\" cy=\""
+          << Y(q == 0 ? pts[i].heave_amp : pts[i].pitch_amp) << "\" r=\"3.5\" fill=\"white\" stroke=\"" << col
+          << "\" stroke-width=\"1.5\"/>\n";
       }
     }
   }
@@ -120,9 +127,10 @@ std::string CalibrationPlotSvg(const std::vector<opt::CalibrationCase>& cases, c
   for (std::size_t c = 0; c < cases.size(); ++c) {
     const double y = kTop + kPanelH + 62 + 22.0 * c;
     s << "<line x1=\"" << kLeft << "\" x2=\"" << kLeft + 30 << "\" y1=\"" << y - 4 << "\" y2=\"" << y - 4
-      << "\" stroke=\"" << kColours[c % 6] << "\" stroke-width=\"2\"/><text x=\"" << kLeft + 38 << "\" y=\"" << y
-      << "\">" << Escape(cases[c].label) << ": Cs = " << F(r.case_Cs[c]) << " ± " << F(r.case_Cs_std_error[c])
-      << " (1σ); rms residual " << F(r.rms_residual_before) << " → " << F(r.rms_residual) << " (all cases)</text>\n";
+      << "\" stroke=\"" << kColours[c % 6] << "\" stroke-width=\"2\"/><text x=\"" << kLeft + 38 << "\" y=\""
+      << y << "\">" << Escape(cases[c].label) << ": Cs = " << F(r.case_Cs[c]) << " ± "
+      << F(r.case_Cs_std_error[c]) << " (1σ); rms residual " << F(r.rms_residual_before) << " → "
+      << F(r.rms_residual) << " (all cases)</text>\n";
   }
   s << "</svg>\n";
   return s.str();

@@ -10,7 +10,7 @@ namespace hullopt::io {
 
 /// SVG text: per case, measured magnitudes (circles), computed at Cs_initial (dashed) and at the fitted Cs
 /// (solid), at the measured points, against λ/L when every case has it, else ω_e [rad/s].
-std::string CalibrationPlotSvg(const std::vector<opt::CalibrationCase>& cases, const opt::CsCalibrationResult& r,
-                               double Cs_initial);
+std::string CalibrationPlotSvg(const std::vector<opt::CalibrationCase>& cases,
+                               const opt::CsCalibrationResult& r, double Cs_initial);
 
 }  // namespace hullopt::io

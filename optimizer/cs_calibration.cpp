@@ -17,8 +17,8 @@ namespace hullopt::opt {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
-// A fitted Cs below this is "at the bound 0" for the warning (Cs of real hulls is 0.0–0.135; 1e-9 is far below
-// any meaningful value and far above Ceres' projection round-off).
+// A fitted Cs below this is "at the bound 0" for the warning (Cs of real hulls is 0.0–0.135; 1e-9 is far
+// below any meaningful value and far above Ceres' projection round-off).
 constexpr double kAtBound = 1e-9;
 
 enum Kind { kHeave = 0, kPitch = 1, kHeavePhase = 2, kPitchPhase = 3 };
@@ -49,16 +49,21 @@ double WrapPi(double a) { return std::remainder(a, 2.0 * kPi); }
 
 double Measured(const TankRaoPoint& p, Kind k) {
   switch (k) {
-    case kHeave: return p.heave_amp;
-    case kPitch: return p.pitch_amp;
-    case kHeavePhase: return p.heave_phase_deg;
-    default: return p.pitch_phase_deg;
+    case kHeave:
+      return p.heave_amp;
+    case kPitch:
+      return p.pitch_amp;
+    case kHeavePhase:
+      return p.heave_phase_deg;
+    default:
+      return p.pitch_phase_deg;
   }
 }
 
 /// Computed magnitude, or phase [deg], of a slot.
 double Computed(const RaoPrediction& r, const Slot& s) {
-  const std::complex<double> x = (s.kind == kHeave || s.kind == kHeavePhase) ? r.heave[s.point] : r.pitch[s.point];
+  const std::complex<double> x =
+      (s.kind == kHeave || s.kind == kHeavePhase) ? r.heave[s.point] : r.pitch[s.point];
   if (s.kind == kHeave || s.kind == kPitch) return std::abs(x);
   return std::arg(x) * 180.0 / kPi;
 }
@@ -86,8 +91,8 @@ bool PredictionOk(const RaoPrediction& r, std::size_t n) {
 
 double CaseCs(const double* x, int block_size, double p) { return block_size == 1 ? x[0] : x[0] + x[1] * p; }
 
-/// The last few predictions of one case. Every residual is its own Ceres residual block (a robust loss acts on
-/// the squared norm of a whole block, so it must see one residual at a time), and the blocks of a case are
+/// The last few predictions of one case. Every residual is its own Ceres residual block (a robust loss acts
+/// on the squared norm of a whole block, so it must see one residual at a time), and the blocks of a case are
 /// evaluated one after another at the same Cs, Cs + h and Cs − h: the cache turns n model calls into one.
 class PredictionCache {
  public:
@@ -149,9 +154,12 @@ std::string Fmt(double v, const char* f = "%.6g") {
 
 std::string ToString(CsFitMode mode) {
   switch (mode) {
-    case CsFitMode::kSingle: return "single";
-    case CsFitMode::kPerCase: return "per_speed";
-    default: return "linear_in_parameter";
+    case CsFitMode::kSingle:
+      return "single";
+    case CsFitMode::kPerCase:
+      return "per_speed";
+    default:
+      return "linear_in_parameter";
   }
 }
 std::string ToString(CsResidualScale scale) {
@@ -159,9 +167,12 @@ std::string ToString(CsResidualScale scale) {
 }
 std::string ToString(CsRobustLoss loss) {
   switch (loss) {
-    case CsRobustLoss::kNone: return "none";
-    case CsRobustLoss::kHuber: return "huber";
-    default: return "cauchy";
+    case CsRobustLoss::kNone:
+      return "none";
+    case CsRobustLoss::kHuber:
+      return "huber";
+    default:
+      return "cauchy";
   }
 }
 
@@ -177,11 +188,15 @@ bool CsCalibrationOptions::IsValid(std::string* error) const {
   if (heave_weight == 0 && pitch_weight == 0)
     return fail("heave_weight = pitch_weight = 0: at least one quantity must be fitted");
   if (loss != CsRobustLoss::kNone && !(std::isfinite(loss_scale) && loss_scale > 0))
-    return fail("loss_scale = " + Fmt(loss_scale) + ": must be a finite number > 0 for loss " + ToString(loss));
+    return fail("loss_scale = " + Fmt(loss_scale) + ": must be a finite number > 0 for loss " +
+                ToString(loss));
   if (!(std::isfinite(Cs_initial) && Cs_initial >= 0))
-    return fail("Cs_initial = " + Fmt(Cs_initial) + ": must be a finite number >= 0 (Cs is a damping coefficient)");
-  if (!std::isfinite(slope_initial)) return fail("slope_initial = " + Fmt(slope_initial) + ": must be finite");
-  if (max_iterations < 1) return fail("max_iterations = " + std::to_string(max_iterations) + ": must be >= 1");
+    return fail("Cs_initial = " + Fmt(Cs_initial) +
+                ": must be a finite number >= 0 (Cs is a damping coefficient)");
+  if (!std::isfinite(slope_initial))
+    return fail("slope_initial = " + Fmt(slope_initial) + ": must be finite");
+  if (max_iterations < 1)
+    return fail("max_iterations = " + std::to_string(max_iterations) + ": must be >= 1");
   if (!(function_tolerance > 0) || !(parameter_tolerance > 0))
     return fail("function_tolerance and parameter_tolerance must be > 0");
   return true;
@@ -212,21 +227,25 @@ bool CheckCalibrationData(const std::vector<CalibrationCase>& cases, const CsCal
     }
     const int nc = static_cast<int>(Layout(c, o).size());
     if (o.mode == CsFitMode::kPerCase && nc <= 1) {
-      return fail("case '" + c.label + "' gives " + std::to_string(nc) + " residual(s) (" +
-                  std::to_string(c.points.size()) +
-                  " point(s)) for 1 fitted Cs: mode per_speed needs more residuals than parameters (n > p) in "
-                  "every case to estimate Cs and its standard error");
+      return fail(
+          "case '" + c.label + "' gives " + std::to_string(nc) + " residual(s) (" +
+          std::to_string(c.points.size()) +
+          " point(s)) for 1 fitted Cs: mode per_speed needs more residuals than parameters (n > p) in "
+          "every case to estimate Cs and its standard error");
     }
     n += nc;
     params.insert(c.hull_parameter);
   }
   if (o.use_phases && !any_phase)
     return fail("use_phases is true but no data row has heave_phase_deg or pitch_phase_deg");
-  const int p = o.mode == CsFitMode::kSingle ? 1 : o.mode == CsFitMode::kPerCase ? static_cast<int>(cases.size()) : 2;
+  const int p = o.mode == CsFitMode::kSingle    ? 1
+                : o.mode == CsFitMode::kPerCase ? static_cast<int>(cases.size())
+                                                : 2;
   if (n <= p) {
-    return fail("the data gives " + std::to_string(n) + " residual(s) for " + std::to_string(p) +
-                " fitted parameter(s) (mode " + ToString(o.mode) +
-                "): the fit needs more residuals than parameters (n > p) to estimate Cs and its standard error");
+    return fail(
+        "the data gives " + std::to_string(n) + " residual(s) for " + std::to_string(p) +
+        " fitted parameter(s) (mode " + ToString(o.mode) +
+        "): the fit needs more residuals than parameters (n > p) to estimate Cs and its standard error");
   }
   if (o.mode == CsFitMode::kLinearInParameter && params.size() < 2) {
     return fail("mode linear_in_parameter fits Cs = a + b*p but all " + std::to_string(cases.size()) +
@@ -259,7 +278,8 @@ CsCalibrationResult CalibrateCs(const CsRaoModel& model, const std::vector<Calib
   }
   auto block_of = [&](int c) -> double* { return blocks[o.mode == CsFitMode::kPerCase ? c : 0].data(); };
 
-  // Start values: the prediction must be usable (otherwise Ceres would only report a failed first evaluation).
+  // Start values: the prediction must be usable (otherwise Ceres would only report a failed first
+  // evaluation).
   std::vector<std::vector<Slot>> layouts(num_cases);
   std::vector<RaoPrediction> before(num_cases);
   for (int c = 0; c < num_cases; ++c) {
@@ -268,10 +288,10 @@ CsCalibrationResult CalibrateCs(const CsRaoModel& model, const std::vector<Calib
     before[c] = model(Cs, c);
     ++evaluations;
     if (!PredictionOk(before[c], cases[c].points.size())) {
-      throw std::domain_error("Cs calibration: the RAO model returned " + std::to_string(before[c].heave.size()) +
-                              " heave and " + std::to_string(before[c].pitch.size()) +
-                              " pitch values (or a non-finite one) for case '" + cases[c].label + "' with " +
-                              std::to_string(cases[c].points.size()) + " points at Cs = " + Fmt(Cs));
+      throw std::domain_error(
+          "Cs calibration: the RAO model returned " + std::to_string(before[c].heave.size()) + " heave and " +
+          std::to_string(before[c].pitch.size()) + " pitch values (or a non-finite one) for case '" +
+          cases[c].label + "' with " + std::to_string(cases[c].points.size()) + " points at Cs = " + Fmt(Cs));
     }
   }
 
@@ -295,7 +315,8 @@ CsCalibrationResult CalibrateCs(const CsRaoModel& model, const std::vector<Calib
       ++res.num_residuals;
     }
   }
-  // Cs >= 0: a damping coefficient. For Cs = a + b·p the bound is on the line, not on a block; checked afterwards.
+  // Cs >= 0: a damping coefficient. For Cs = a + b·p the bound is on the line, not on a block; checked
+  // afterwards.
   if (block_size == 1)
     for (auto& b : blocks) problem.SetParameterLowerBound(b.data(), 0, 0.0);
 
@@ -333,7 +354,8 @@ CsCalibrationResult CalibrateCs(const CsRaoModel& model, const std::vector<Calib
   res.covariance.assign(p, std::vector<double>(p, 0.0));
   {
     ceres::Covariance::Options co;
-    co.algorithm_type = ceres::DENSE_SVD;  // tiny problems; SVD also reports rank deficiency instead of failing
+    co.algorithm_type =
+        ceres::DENSE_SVD;  // tiny problems; SVD also reports rank deficiency instead of failing
     ceres::Covariance cov(co);
     std::vector<std::pair<const double*, const double*>> pairs;
     for (auto& b : blocks) pairs.emplace_back(b.data(), b.data());  // blocks are independent (per case)
@@ -344,14 +366,17 @@ CsCalibrationResult CalibrateCs(const CsRaoModel& model, const std::vector<Calib
         cov.GetCovarianceBlock(blocks[b].data(), blocks[b].data(), m.data());
         for (int i = 0; i < block_size; ++i)
           for (int j = 0; j < block_size; ++j)
-            res.covariance[b * block_size + i][b * block_size + j] = m[i * block_size + j] * res.residual_variance;
+            res.covariance[b * block_size + i][b * block_size + j] =
+                m[i * block_size + j] * res.residual_variance;
       }
     } else {
-      res.warnings.push_back("Ceres could not compute the covariance (Jacobian rank deficient: the data do not "
-                             "depend on Cs?); standard errors are reported as 0");
+      res.warnings.push_back(
+          "Ceres could not compute the covariance (Jacobian rank deficient: the data do not "
+          "depend on Cs?); standard errors are reported as 0");
     }
   }
-  for (int i = 0; i < p; ++i) res.parameter_std_errors.push_back(std::sqrt(std::max(0.0, res.covariance[i][i])));
+  for (int i = 0; i < p; ++i)
+    res.parameter_std_errors.push_back(std::sqrt(std::max(0.0, res.covariance[i][i])));
 
   // Per-case Cs, before/after residuals and peaks.
   double ss_before = 0, ss_after = 0;
@@ -372,8 +397,8 @@ CsCalibrationResult CalibrateCs(const CsRaoModel& model, const std::vector<Calib
                              "' is at its lower bound 0: the standard error ignores the bound");
     }
     if (block_size == 2 && Cs < 0) {
-      res.warnings.push_back("Cs = a + b*p is negative (" + Fmt(Cs) + ") for case '" + cc.label +
-                             "' (p = " + Fmt(cc.hull_parameter) + "): the line is not bounded, check the data");
+      res.warnings.push_back("Cs = a + b*p is negative (" + Fmt(Cs) + ") for case '" + cc.label + "' (p = " +
+                             Fmt(cc.hull_parameter) + "): the line is not bounded, check the data");
     }
     const RaoPrediction after = model(Cs, c);
     ++evaluations;
@@ -403,7 +428,8 @@ CsCalibrationResult CalibrateCs(const CsRaoModel& model, const std::vector<Calib
       all_l = all_l && pt.has_lambda_over_L;
     }
     if (!all_w && !all_l) {
-      res.warnings.push_back("case '" + cc.label + "' mixes rows with only omega_e and only lambda_over_L: no peaks");
+      res.warnings.push_back("case '" + cc.label +
+                             "' mixes rows with only omega_e and only lambda_over_L: no peaks");
       continue;
     }
     for (int q = 0; q < 2; ++q) {
@@ -471,10 +497,10 @@ std::string CsCalibrationResult::FullReport() const {
   s << "\nPeaks (interpolated; relative error of the computed peak against the measured one):\n";
   for (const auto& pk : peaks) {
     s << "  case " << pk.case_index << " " << pk.quantity << ": measured " << Fmt(pk.measured.value, "%.4g")
-      << " at " << pk.abscissa << " " << Fmt(pk.measured.x, "%.4g") << (pk.measured.at_edge ? " (at data edge)" : "")
-      << "; before " << Fmt(pk.before.value, "%.4g") << " (" << Fmt(100 * pk.RelativeErrorBefore(), "%+.1f")
-      << "%), after " << Fmt(pk.after.value, "%.4g") << " (" << Fmt(100 * pk.RelativeErrorAfter(), "%+.1f")
-      << "%)\n";
+      << " at " << pk.abscissa << " " << Fmt(pk.measured.x, "%.4g")
+      << (pk.measured.at_edge ? " (at data edge)" : "") << "; before " << Fmt(pk.before.value, "%.4g") << " ("
+      << Fmt(100 * pk.RelativeErrorBefore(), "%+.1f") << "%), after " << Fmt(pk.after.value, "%.4g") << " ("
+      << Fmt(100 * pk.RelativeErrorAfter(), "%+.1f") << "%)\n";
   }
   s << "\nResiduals (weighted; computed before at the initial Cs, after at the fitted Cs):\n";
   s << "  source  quantity  measured  computed_before  computed_after  residual_before  residual_after\n";

@@ -24,10 +24,11 @@ bool SyntheticOscillatorOptions::IsValid(std::string* error) const {
     if (error) *error = std::string(name) + " = " + std::to_string(v) + ": must be a finite number >= 0";
     return false;
   };
-  return positive(heave_natural_rad_s, "heave_natural_rad_s") && positive(pitch_natural_rad_s, "pitch_natural_rad_s") &&
-         positive(heave_zeta0, "heave_zeta0") && positive(pitch_zeta0, "pitch_zeta0") &&
-         nonneg(heave_zeta_per_Cs, "heave_zeta_per_Cs") && nonneg(pitch_zeta_per_Cs, "pitch_zeta_per_Cs") &&
-         positive(length_m, "length_m") && positive(g_m_s2, "g_m_s2");
+  return positive(heave_natural_rad_s, "heave_natural_rad_s") &&
+         positive(pitch_natural_rad_s, "pitch_natural_rad_s") && positive(heave_zeta0, "heave_zeta0") &&
+         positive(pitch_zeta0, "pitch_zeta0") && nonneg(heave_zeta_per_Cs, "heave_zeta_per_Cs") &&
+         nonneg(pitch_zeta_per_Cs, "pitch_zeta_per_Cs") && positive(length_m, "length_m") &&
+         positive(g_m_s2, "g_m_s2");
 }
 
 double EncounterFrequency(const TankRaoPoint& p, double length_m, double g_m_s2) {

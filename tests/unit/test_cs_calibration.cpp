@@ -1,6 +1,7 @@
-// Ceres Cs fit against closed forms: with an RAO magnitude linear in Cs, least squares is linear regression, so
-// the fitted values, the scaled covariance and the reduced chi-square have textbook formulas (solved here with
-// Eigen, independently of Ceres). Robust loss against a bisection solution of the Huber M-estimator equation.
+// Ceres Cs fit against closed forms: with an RAO magnitude linear in Cs, least squares is linear regression,
+// so the fitted values, the scaled covariance and the reduced chi-square have textbook formulas (solved here
+// with Eigen, independently of Ceres). Robust loss against a bisection solution of the Huber M-estimator
+// equation.
 #include <Eigen/Dense>
 #include <catch2/catch.hpp>
 #include <cmath>
@@ -11,8 +12,9 @@
 using namespace hullopt::opt;
 
 namespace {
-// Ceres stops on relative cost change 1e-10 / step 1e-10 and differentiates numerically (central, relative step
-// 1e-6, error ~1e-12 relative for a linear model): 1e-7 relative on the fitted values is well inside that.
+// Ceres stops on relative cost change 1e-10 / step 1e-10 and differentiates numerically (central, relative
+// step 1e-6, error ~1e-12 relative for a linear model): 1e-7 relative on the fitted values is well inside
+// that.
 constexpr double kFitTol = 1e-7;
 // Standard errors come from Ceres' SVD of J and the numeric Jacobian; 1e-6 relative.
 constexpr double kStdErrTol = 1e-6;
@@ -97,8 +99,8 @@ TEST_CASE("single Cs: weighted linear least squares in closed form", "[calibrati
   CHECK(r.converged);
   CHECK(r.covariance_ok);
   CHECK(r.case_Cs[0] == r.parameters[0]);
-  // The per-case prediction cache: one model call per distinct Cs (base and ±h per Jacobian, trial steps), not
-  // one per residual block. Without it this fit (8 blocks) would take 8× as many calls.
+  // The per-case prediction cache: one model call per distinct Cs (base and ±h per Jacobian, trial steps),
+  // not one per residual block. Without it this fit (8 blocks) would take 8× as many calls.
   CHECK(r.model_evaluations < 8 * 3);
   REQUIRE(r.residuals.size() == 8);
   CHECK(r.residuals[1].quantity == "pitch");
@@ -239,7 +241,8 @@ TEST_CASE("Huber loss: the M-estimator equation solved by bisection", "[calibrat
   o.loss = CsRobustLoss::kNone;
   const auto plain = CalibrateCs(m, {MakeCase("A", heave, kPitch)}, o);
   const auto clean = CalibrateCs(m, {MakeCase("A", kHeave, kPitch)}, o);
-  CHECK(std::fabs(rc.parameters[0] - clean.parameters[0]) < std::fabs(plain.parameters[0] - clean.parameters[0]));
+  CHECK(std::fabs(rc.parameters[0] - clean.parameters[0]) <
+        std::fabs(plain.parameters[0] - clean.parameters[0]));
 }
 
 TEST_CASE("bound Cs >= 0 holds and is reported", "[calibration]") {
@@ -317,7 +320,8 @@ TEST_CASE("data that cannot determine the parameters is refused", "[calibration]
   CHECK(e.find("case 'B' gives 1 residual(s)") != std::string::npos);
   o = {};
   o.mode = CsFitMode::kLinearInParameter;
-  CHECK_FALSE(CheckCalibrationData({MakeCase("A", kHeave, kPitch, 2), MakeCase("B", kHeave, kPitch, 2)}, o, &e));
+  CHECK_FALSE(
+      CheckCalibrationData({MakeCase("A", kHeave, kPitch, 2), MakeCase("B", kHeave, kPitch, 2)}, o, &e));
   CHECK(e.find("at least two hulls") != std::string::npos);
   o = {};
   o.residual_scale = CsResidualScale::kRelative;
