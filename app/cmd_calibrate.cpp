@@ -1,4 +1,6 @@
 // hullopt calibrate CONFIG --out DIR: fits the damping coefficient Cs to tank RAOs (issue 7).
+#include <glog/logging.h>
+
 #include <cctype>
 #include <cstdio>
 #include <fstream>
@@ -63,6 +65,9 @@ void RunCalibrate(const std::string& config_file, const std::string& out_dir) {
   const opt::CsRaoModel model = MakeCalibrationModel(root, cfg, cases);
   root.Finish();
 
+  // Ceres logs failed model evaluations through glog to stderr; CalibrateCs reports them in its warnings or
+  // its exception instead, so keep the terminal to the one-line error rule.
+  FLAGS_minloglevel = google::GLOG_FATAL;
   opt::CsCalibrationResult r;
   try {
     r = opt::CalibrateCs(model, cases, cfg.options);
@@ -75,7 +80,8 @@ void RunCalibrate(const std::string& config_file, const std::string& out_dir) {
   PrepareOutputDir(out_dir, "calibrate", config_file, root.resolved());
   Write(OutPath(out_dir, "calibration.json"), io::CalibrationJson(cfg, cases, r));
   Write(OutPath(out_dir, "calibration_report.txt"), r.FullReport());
-  Write(OutPath(out_dir, "calibration_plot.svg"), io::CalibrationPlotSvg(cases, r, cfg.options.Cs_initial));
+  io::WriteSvg(io::CalibrationPlot(cases, r, cfg.options.Cs_initial),
+               OutPath(out_dir, "calibration_plot.svg"));
   std::vector<std::string> snippets;
   if (r.mode == opt::CsFitMode::kSingle) {
     snippets.push_back("calibrated_solver.yaml");

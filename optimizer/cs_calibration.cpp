@@ -8,7 +8,6 @@
 #include <cmath>
 #include <cstdio>
 #include <memory>
-#include <mutex>
 #include <set>
 #include <sstream>
 #include <stdexcept>
@@ -91,29 +90,74 @@ bool PredictionOk(const RaoPrediction& r, std::size_t n) {
 
 double CaseCs(const double* x, int block_size, double p) { return block_size == 1 ? x[0] : x[0] + x[1] * p; }
 
+/// Below Cs = 0 the model is not evaluated (a real solver refuses a negative damping coefficient, and Ceres'
+/// central difference at the bound asks for Cs = −h): the prediction is extrapolated linearly from Cs = 0 and
+/// Cs = kExtrapolationStep. 1e-6 is far below any meaningful Cs (0.0–0.135) and far above round-off.
+constexpr double kExtrapolationStep = 1e-6;
+
+RaoPrediction Extrapolate(const RaoPrediction& p0, const RaoPrediction& p1, double Cs) {
+  RaoPrediction r = p0;
+  const double t = Cs / kExtrapolationStep;
+  for (std::size_t i = 0; i < r.heave.size() && i < p1.heave.size(); ++i)
+    r.heave[i] += t * (p1.heave[i] - p0.heave[i]);
+  for (std::size_t i = 0; i < r.pitch.size() && i < p1.pitch.size(); ++i)
+    r.pitch[i] += t * (p1.pitch[i] - p0.pitch[i]);
+  return r;
+}
+
+/// The model at any Cs (extrapolated below 0). Model exceptions propagate.
+RaoPrediction EvaluateModel(const CsRaoModel& model, double Cs, int case_index,
+                            std::atomic<int>* evaluations) {
+  if (Cs >= 0) {
+    ++*evaluations;
+    return model(Cs, case_index);
+  }
+  *evaluations += 2;
+  return Extrapolate(model(0.0, case_index), model(kExtrapolationStep, case_index), Cs);
+}
+
 /// The last few predictions of one case. Every residual is its own Ceres residual block (a robust loss acts
 /// on the squared norm of a whole block, so it must see one residual at a time), and the blocks of a case are
 /// evaluated one after another at the same Cs, Cs + h and Cs − h: the cache turns n model calls into one.
+/// A model that throws or returns an unusable prediction makes the evaluation fail (Ceres rejects the step).
+/// Used from Ceres' single evaluation thread; the returned pointer is valid until the next Get.
 class PredictionCache {
  public:
   PredictionCache(const CsRaoModel* model, int case_index, std::size_t points, std::atomic<int>* evaluations)
       : model_(model), case_index_(case_index), points_(points), evaluations_(evaluations) {}
-  /// Null when the model's answer is unusable (wrong size or non-finite).
+  /// Null when the model's answer is unusable (exception, wrong size or non-finite).
   const RaoPrediction* Get(double Cs) {
-    std::lock_guard<std::mutex> lock(mutex_);
+    if (Cs >= 0) return Raw(Cs);
+    const RaoPrediction* p0 = Raw(0.0);
+    if (!p0) return nullptr;
+    const RaoPrediction zero = *p0;  // Raw may reuse p0's slot
+    const RaoPrediction* p1 = Raw(kExtrapolationStep);
+    if (!p1) return nullptr;
+    extrapolated_ = Extrapolate(zero, *p1, Cs);
+    return &extrapolated_;
+  }
+  const std::string& last_error() const { return last_error_; }
+
+ private:
+  const RaoPrediction* Raw(double Cs) {
     for (const auto& e : entries_)
       if (e.valid && e.Cs == Cs) return e.ok ? &e.prediction : nullptr;
     Entry& e = entries_[next_];
     next_ = (next_ + 1) % entries_.size();
-    e.prediction = (*model_)(Cs, case_index_);
-    ++*evaluations_;
     e.Cs = Cs;
     e.valid = true;
-    e.ok = PredictionOk(e.prediction, points_);
+    ++*evaluations_;
+    try {
+      e.prediction = (*model_)(Cs, case_index_);
+      e.ok = PredictionOk(e.prediction, points_);
+      if (!e.ok) last_error_ = "wrong number of points or a non-finite RAO at Cs = " + std::to_string(Cs);
+    } catch (const std::exception& ex) {
+      e.ok = false;
+      last_error_ = ex.what();
+    }
     return e.ok ? &e.prediction : nullptr;
   }
 
- private:
   struct Entry {
     bool valid = false, ok = false;
     double Cs = 0.0;
@@ -123,9 +167,10 @@ class PredictionCache {
   int case_index_;
   std::size_t points_;
   std::atomic<int>* evaluations_;
-  std::mutex mutex_;
   std::array<Entry, 8> entries_;  // Cs and Cs ± h per parameter (5 values for a + b·p), the trial step
   std::size_t next_ = 0;
+  RaoPrediction extrapolated_;
+  std::string last_error_;
 };
 
 /// One residual; parameter block of size N (1: Cs, 2: a and b of Cs = a + b·p).
@@ -285,8 +330,12 @@ CsCalibrationResult CalibrateCs(const CsRaoModel& model, const std::vector<Calib
   for (int c = 0; c < num_cases; ++c) {
     layouts[c] = Layout(cases[c], o);
     const double Cs = CaseCs(block_of(c), block_size, cases[c].hull_parameter);
-    before[c] = model(Cs, c);
-    ++evaluations;
+    try {
+      before[c] = EvaluateModel(model, Cs, c, &evaluations);
+    } catch (const std::exception& e) {
+      throw std::domain_error("Cs calibration: the RAO model failed for case '" + cases[c].label +
+                              "' at the start value Cs = " + Fmt(Cs) + ": " + e.what());
+    }
     if (!PredictionOk(before[c], cases[c].points.size())) {
       throw std::domain_error(
           "Cs calibration: the RAO model returned " + std::to_string(before[c].heave.size()) + " heave and " +
@@ -334,8 +383,16 @@ CsCalibrationResult CalibrateCs(const CsRaoModel& model, const std::vector<Calib
   res.final_cost = summary.final_cost;
   res.ceres_brief = summary.BriefReport();
   res.ceres_full = summary.FullReport();
+  std::string model_errors;
+  for (int c = 0; c < num_cases; ++c) {
+    if (caches[c]->last_error().empty()) continue;
+    res.warnings.push_back("the RAO model failed during the fit for case '" + cases[c].label +
+                           "' (Ceres rejected that step): " + caches[c]->last_error());
+    model_errors += "; case '" + cases[c].label + "': " + caches[c]->last_error();
+  }
   if (!summary.IsSolutionUsable()) {
-    throw std::domain_error("Cs calibration: Ceres found no usable solution: " + summary.message);
+    throw std::domain_error("Cs calibration: Ceres found no usable solution: " + summary.message +
+                            model_errors);
   }
   if (!res.converged) res.warnings.push_back("Ceres did not report convergence: " + summary.message);
 
@@ -400,8 +457,13 @@ CsCalibrationResult CalibrateCs(const CsRaoModel& model, const std::vector<Calib
       res.warnings.push_back("Cs = a + b*p is negative (" + Fmt(Cs) + ") for case '" + cc.label + "' (p = " +
                              Fmt(cc.hull_parameter) + "): the line is not bounded, check the data");
     }
-    const RaoPrediction after = model(Cs, c);
-    ++evaluations;
+    RaoPrediction after;
+    try {
+      after = EvaluateModel(model, Cs, c, &evaluations);
+    } catch (const std::exception& e) {
+      throw std::domain_error("Cs calibration: the RAO model failed at the fitted Cs = " + Fmt(Cs) + ": " +
+                              e.what());
+    }
     if (!PredictionOk(after, cc.points.size()))
       throw std::domain_error("Cs calibration: the RAO model failed at the fitted Cs = " + Fmt(Cs));
     res.predictions_before.push_back(before[c]);

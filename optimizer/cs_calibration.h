@@ -35,9 +35,10 @@ struct RaoPrediction {
   std::vector<std::complex<double>> pitch;  ///< X5/(kA) [-]
 };
 
-/// The ship-motion model seen by the fit: RAOs of case `case_index` for a damping coefficient Cs [-]. Must be
-/// callable for any finite Cs (the central difference steps slightly below a bound of 0) and
-/// thread-compatible.
+/// The ship-motion model seen by the fit: RAOs of case `case_index` for a damping coefficient Cs [-]. It is
+/// called with Cs >= 0 only: below 0 (Ceres' central difference at the bound, or a line a + b·p below zero)
+/// the fit extrapolates linearly from Cs = 0 and Cs = 1e-6. It may throw: during the fit that rejects the
+/// Ceres step (reported in the warnings); at the start or final value CalibrateCs throws std::domain_error.
 using CsRaoModel = std::function<RaoPrediction(double Cs, int case_index)>;
 
 enum class CsFitMode {

@@ -345,3 +345,47 @@ TEST_CASE("a model returning the wrong number of points is a domain error", "[ca
   };
   CHECK_THROWS_AS(CalibrateCs(nan, {MakeCase("A", kHeave, kPitch)}, {}), std::domain_error);
 }
+
+TEST_CASE("a model that refuses Cs < 0 works at the bound (extrapolation below 0)", "[calibration]") {
+  // Like the strip solver's MotionOptions::IsValid: Cs must be >= 0. Data above the model at Cs = 0, so the
+  // optimum is on the bound and Ceres' central difference there asks for Cs = −h.
+  const LinearModel lin = Model1();
+  CsRaoModel strict = [lin](double Cs, int c) {
+    if (Cs < 0) throw std::invalid_argument("Cs = " + std::to_string(Cs) + ": must be >= 0");
+    return lin(Cs, c);
+  };
+  const auto data = MakeCase("A", {1.1, 1.6, 2.1, 1.3}, {0.9, 1.2, 1.4, 1.0});
+  const auto r = CalibrateCs(strict, {data}, {});
+  CHECK(r.parameters[0] < 1e-9);
+  for (const auto& w : r.warnings) CHECK(w.find("failed") == std::string::npos);  // never called below 0
+  // The same fit with the unrestricted model gives the same answer.
+  const auto free = CalibrateCs(lin, {data}, {});
+  CHECK(r.parameters[0] == Approx(free.parameters[0]).margin(1e-12));
+  CHECK(r.parameter_std_errors[0] == Approx(free.parameter_std_errors[0]).epsilon(kStdErrTol));
+}
+
+TEST_CASE("a model that throws during the fit: reported, never escaping Ceres unhandled", "[calibration]") {
+  const LinearModel lin = Model1();
+  // The least-squares optimum of the data is Cs ≈ 0.05 (closed form in the first test), but the model has no
+  // solution below 0.08: Ceres' steps towards the optimum fail. Either Ceres stops at a usable point (then
+  // the failures are in the warnings) or CalibrateCs throws std::domain_error carrying the model's message;
+  // the model's exception must not cross Ceres.
+  CsRaoModel picky = [lin](double Cs, int c) {
+    if (Cs < 0.08) throw std::domain_error("no solution below 0.08");
+    return lin(Cs, c);
+  };
+  CsCalibrationOptions o;
+  o.Cs_initial = 0.12;
+  try {
+    const auto r = CalibrateCs(picky, {MakeCase("A", kHeave, kPitch)}, o);
+    CHECK(r.parameters[0] >= 0.08);
+    REQUIRE_FALSE(r.warnings.empty());
+    CHECK(r.warnings.front().find("no solution below 0.08") != std::string::npos);
+  } catch (const std::domain_error& e) {
+    CHECK(std::string(e.what()).find("no solution below 0.08") != std::string::npos);
+  }
+  // A model failing at the start value is a domain error naming the case.
+  o.Cs_initial = 0.05;
+  CHECK_THROWS_WITH(CalibrateCs(picky, {MakeCase("A", kHeave, kPitch)}, o),
+                    Catch::Contains("case 'A'") && Catch::Contains("no solution below 0.08"));
+}
