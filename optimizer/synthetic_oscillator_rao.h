@@ -25,10 +25,6 @@ struct SyntheticOscillatorOptions {
   bool IsValid(std::string* error) const;
 };
 
-/// Encounter frequency of a measured point [rad/s]: its ω_e, or from λ/L and Fn in head seas,
-/// k = 2π/(λ/L·L), ω = sqrt(gk), U = Fn·sqrt(gL), ω_e = ω + ω²U/g.
-double EncounterFrequency(const TankRaoPoint& p, double length_m, double g_m_s2);
-
 /// The model for the given cases (copied). Throws std::invalid_argument for invalid options.
 CsRaoModel MakeSyntheticOscillatorModel(const SyntheticOscillatorOptions& options,
                                         const std::vector<CalibrationCase>& cases);
