@@ -102,7 +102,8 @@ std::vector<opt::TankRaoPoint> ReadTankRaoCsv(const std::string& file) {
       return true;
     };
     auto positive = [&](const std::string& name, double v, const std::string& why) {
-      if (!(v > 0)) throw InputError(where + ": column '" + name + "' = " + Num(v) + ": must be > 0 (" + why + ")");
+      if (!(v > 0))
+        throw InputError(where + ": column '" + name + "' = " + Num(v) + ": must be > 0 (" + why + ")");
     };
     opt::TankRaoPoint p;
     p.source = where;
@@ -153,15 +154,16 @@ std::vector<opt::CalibrationCase> GroupTankRaoBySpeed(const std::vector<opt::Tan
     for (std::size_t s = 0; s < speeds_Fn.size(); ++s)
       if (std::fabs(p.Fn - speeds_Fn[s]) <= Fn_tolerance) match = s;
     if (match == speeds_Fn.size()) {
-      throw InputError(p.source + ": column 'Fn' = " + Num(p.Fn) + ": not a speed of the config (Fn " + defined +
-                       (hull_name.empty() ? "" : ", hull '" + hull_name + "'") +
+      throw InputError(p.source + ": column 'Fn' = " + Num(p.Fn) + ": not a speed of the config (Fn " +
+                       defined + (hull_name.empty() ? "" : ", hull '" + hull_name + "'") +
                        "); add it to the config's speeds or remove the rows");
     }
     cases[match].points.push_back(p);
   }
   for (const auto& c : cases) {
     if (c.points.empty()) {
-      throw InputError("config speed Fn " + Num(c.Fn) + (hull_name.empty() ? "" : " of hull '" + hull_name + "'") +
+      throw InputError("config speed Fn " + Num(c.Fn) +
+                       (hull_name.empty() ? "" : " of hull '" + hull_name + "'") +
                        " has no rows in the tank data files: give data for it or remove it from the config");
     }
   }

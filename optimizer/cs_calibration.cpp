@@ -8,7 +8,6 @@
 #include <cmath>
 #include <cstdio>
 #include <memory>
-#include <mutex>
 #include <set>
 #include <sstream>
 #include <stdexcept>
@@ -17,8 +16,8 @@ namespace hullopt::opt {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
-// A fitted Cs below this is "at the bound 0" for the warning (Cs of real hulls is 0.0–0.135; 1e-9 is far below
-// any meaningful value and far above Ceres' projection round-off).
+// A fitted Cs below this is "at the bound 0" for the warning (Cs of real hulls is 0.0–0.135; 1e-9 is far
+// below any meaningful value and far above Ceres' projection round-off).
 constexpr double kAtBound = 1e-9;
 
 enum Kind { kHeave = 0, kPitch = 1, kHeavePhase = 2, kPitchPhase = 3 };
@@ -49,16 +48,21 @@ double WrapPi(double a) { return std::remainder(a, 2.0 * kPi); }
 
 double Measured(const TankRaoPoint& p, Kind k) {
   switch (k) {
-    case kHeave: return p.heave_amp;
-    case kPitch: return p.pitch_amp;
-    case kHeavePhase: return p.heave_phase_deg;
-    default: return p.pitch_phase_deg;
+    case kHeave:
+      return p.heave_amp;
+    case kPitch:
+      return p.pitch_amp;
+    case kHeavePhase:
+      return p.heave_phase_deg;
+    default:
+      return p.pitch_phase_deg;
   }
 }
 
 /// Computed magnitude, or phase [deg], of a slot.
 double Computed(const RaoPrediction& r, const Slot& s) {
-  const std::complex<double> x = (s.kind == kHeave || s.kind == kHeavePhase) ? r.heave[s.point] : r.pitch[s.point];
+  const std::complex<double> x =
+      (s.kind == kHeave || s.kind == kHeavePhase) ? r.heave[s.point] : r.pitch[s.point];
   if (s.kind == kHeave || s.kind == kPitch) return std::abs(x);
   return std::arg(x) * 180.0 / kPi;
 }
@@ -86,29 +90,74 @@ bool PredictionOk(const RaoPrediction& r, std::size_t n) {
 
 double CaseCs(const double* x, int block_size, double p) { return block_size == 1 ? x[0] : x[0] + x[1] * p; }
 
-/// The last few predictions of one case. Every residual is its own Ceres residual block (a robust loss acts on
-/// the squared norm of a whole block, so it must see one residual at a time), and the blocks of a case are
+/// Below Cs = 0 the model is not evaluated (a real solver refuses a negative damping coefficient, and Ceres'
+/// central difference at the bound asks for Cs = −h): the prediction is extrapolated linearly from Cs = 0 and
+/// Cs = kExtrapolationStep. 1e-6 is far below any meaningful Cs (0.0–0.135) and far above round-off.
+constexpr double kExtrapolationStep = 1e-6;
+
+RaoPrediction Extrapolate(const RaoPrediction& p0, const RaoPrediction& p1, double Cs) {
+  RaoPrediction r = p0;
+  const double t = Cs / kExtrapolationStep;
+  for (std::size_t i = 0; i < r.heave.size() && i < p1.heave.size(); ++i)
+    r.heave[i] += t * (p1.heave[i] - p0.heave[i]);
+  for (std::size_t i = 0; i < r.pitch.size() && i < p1.pitch.size(); ++i)
+    r.pitch[i] += t * (p1.pitch[i] - p0.pitch[i]);
+  return r;
+}
+
+/// The model at any Cs (extrapolated below 0). Model exceptions propagate.
+RaoPrediction EvaluateModel(const CsRaoModel& model, double Cs, int case_index,
+                            std::atomic<int>* evaluations) {
+  if (Cs >= 0) {
+    ++*evaluations;
+    return model(Cs, case_index);
+  }
+  *evaluations += 2;
+  return Extrapolate(model(0.0, case_index), model(kExtrapolationStep, case_index), Cs);
+}
+
+/// The last few predictions of one case. Every residual is its own Ceres residual block (a robust loss acts
+/// on the squared norm of a whole block, so it must see one residual at a time), and the blocks of a case are
 /// evaluated one after another at the same Cs, Cs + h and Cs − h: the cache turns n model calls into one.
+/// A model that throws or returns an unusable prediction makes the evaluation fail (Ceres rejects the step).
+/// Used from Ceres' single evaluation thread; the returned pointer is valid until the next Get.
 class PredictionCache {
  public:
   PredictionCache(const CsRaoModel* model, int case_index, std::size_t points, std::atomic<int>* evaluations)
       : model_(model), case_index_(case_index), points_(points), evaluations_(evaluations) {}
-  /// Null when the model's answer is unusable (wrong size or non-finite).
+  /// Null when the model's answer is unusable (exception, wrong size or non-finite).
   const RaoPrediction* Get(double Cs) {
-    std::lock_guard<std::mutex> lock(mutex_);
+    if (Cs >= 0) return Raw(Cs);
+    const RaoPrediction* p0 = Raw(0.0);
+    if (!p0) return nullptr;
+    const RaoPrediction zero = *p0;  // Raw may reuse p0's slot
+    const RaoPrediction* p1 = Raw(kExtrapolationStep);
+    if (!p1) return nullptr;
+    extrapolated_ = Extrapolate(zero, *p1, Cs);
+    return &extrapolated_;
+  }
+  const std::string& last_error() const { return last_error_; }
+
+ private:
+  const RaoPrediction* Raw(double Cs) {
     for (const auto& e : entries_)
       if (e.valid && e.Cs == Cs) return e.ok ? &e.prediction : nullptr;
     Entry& e = entries_[next_];
     next_ = (next_ + 1) % entries_.size();
-    e.prediction = (*model_)(Cs, case_index_);
-    ++*evaluations_;
     e.Cs = Cs;
     e.valid = true;
-    e.ok = PredictionOk(e.prediction, points_);
+    ++*evaluations_;
+    try {
+      e.prediction = (*model_)(Cs, case_index_);
+      e.ok = PredictionOk(e.prediction, points_);
+      if (!e.ok) last_error_ = "wrong number of points or a non-finite RAO at Cs = " + std::to_string(Cs);
+    } catch (const std::exception& ex) {
+      e.ok = false;
+      last_error_ = ex.what();
+    }
     return e.ok ? &e.prediction : nullptr;
   }
 
- private:
   struct Entry {
     bool valid = false, ok = false;
     double Cs = 0.0;
@@ -118,9 +167,10 @@ class PredictionCache {
   int case_index_;
   std::size_t points_;
   std::atomic<int>* evaluations_;
-  std::mutex mutex_;
-  std::array<Entry, 4> entries_;  // Cs, Cs + h, Cs − h and the trial step
+  std::array<Entry, 8> entries_;  // Cs and Cs ± h per parameter (5 values for a + b·p), the trial step
   std::size_t next_ = 0;
+  RaoPrediction extrapolated_;
+  std::string last_error_;
 };
 
 /// One residual; parameter block of size N (1: Cs, 2: a and b of Cs = a + b·p).
@@ -149,9 +199,12 @@ std::string Fmt(double v, const char* f = "%.6g") {
 
 std::string ToString(CsFitMode mode) {
   switch (mode) {
-    case CsFitMode::kSingle: return "single";
-    case CsFitMode::kPerCase: return "per_speed";
-    default: return "linear_in_parameter";
+    case CsFitMode::kSingle:
+      return "single";
+    case CsFitMode::kPerCase:
+      return "per_speed";
+    default:
+      return "linear_in_parameter";
   }
 }
 std::string ToString(CsResidualScale scale) {
@@ -159,9 +212,12 @@ std::string ToString(CsResidualScale scale) {
 }
 std::string ToString(CsRobustLoss loss) {
   switch (loss) {
-    case CsRobustLoss::kNone: return "none";
-    case CsRobustLoss::kHuber: return "huber";
-    default: return "cauchy";
+    case CsRobustLoss::kNone:
+      return "none";
+    case CsRobustLoss::kHuber:
+      return "huber";
+    default:
+      return "cauchy";
   }
 }
 
@@ -177,11 +233,15 @@ bool CsCalibrationOptions::IsValid(std::string* error) const {
   if (heave_weight == 0 && pitch_weight == 0)
     return fail("heave_weight = pitch_weight = 0: at least one quantity must be fitted");
   if (loss != CsRobustLoss::kNone && !(std::isfinite(loss_scale) && loss_scale > 0))
-    return fail("loss_scale = " + Fmt(loss_scale) + ": must be a finite number > 0 for loss " + ToString(loss));
+    return fail("loss_scale = " + Fmt(loss_scale) + ": must be a finite number > 0 for loss " +
+                ToString(loss));
   if (!(std::isfinite(Cs_initial) && Cs_initial >= 0))
-    return fail("Cs_initial = " + Fmt(Cs_initial) + ": must be a finite number >= 0 (Cs is a damping coefficient)");
-  if (!std::isfinite(slope_initial)) return fail("slope_initial = " + Fmt(slope_initial) + ": must be finite");
-  if (max_iterations < 1) return fail("max_iterations = " + std::to_string(max_iterations) + ": must be >= 1");
+    return fail("Cs_initial = " + Fmt(Cs_initial) +
+                ": must be a finite number >= 0 (Cs is a damping coefficient)");
+  if (!std::isfinite(slope_initial))
+    return fail("slope_initial = " + Fmt(slope_initial) + ": must be finite");
+  if (max_iterations < 1)
+    return fail("max_iterations = " + std::to_string(max_iterations) + ": must be >= 1");
   if (!(function_tolerance > 0) || !(parameter_tolerance > 0))
     return fail("function_tolerance and parameter_tolerance must be > 0");
   return true;
@@ -212,21 +272,25 @@ bool CheckCalibrationData(const std::vector<CalibrationCase>& cases, const CsCal
     }
     const int nc = static_cast<int>(Layout(c, o).size());
     if (o.mode == CsFitMode::kPerCase && nc <= 1) {
-      return fail("case '" + c.label + "' gives " + std::to_string(nc) + " residual(s) (" +
-                  std::to_string(c.points.size()) +
-                  " point(s)) for 1 fitted Cs: mode per_speed needs more residuals than parameters (n > p) in "
-                  "every case to estimate Cs and its standard error");
+      return fail(
+          "case '" + c.label + "' gives " + std::to_string(nc) + " residual(s) (" +
+          std::to_string(c.points.size()) +
+          " point(s)) for 1 fitted Cs: mode per_speed needs more residuals than parameters (n > p) in "
+          "every case to estimate Cs and its standard error");
     }
     n += nc;
     params.insert(c.hull_parameter);
   }
   if (o.use_phases && !any_phase)
     return fail("use_phases is true but no data row has heave_phase_deg or pitch_phase_deg");
-  const int p = o.mode == CsFitMode::kSingle ? 1 : o.mode == CsFitMode::kPerCase ? static_cast<int>(cases.size()) : 2;
+  const int p = o.mode == CsFitMode::kSingle    ? 1
+                : o.mode == CsFitMode::kPerCase ? static_cast<int>(cases.size())
+                                                : 2;
   if (n <= p) {
-    return fail("the data gives " + std::to_string(n) + " residual(s) for " + std::to_string(p) +
-                " fitted parameter(s) (mode " + ToString(o.mode) +
-                "): the fit needs more residuals than parameters (n > p) to estimate Cs and its standard error");
+    return fail(
+        "the data gives " + std::to_string(n) + " residual(s) for " + std::to_string(p) +
+        " fitted parameter(s) (mode " + ToString(o.mode) +
+        "): the fit needs more residuals than parameters (n > p) to estimate Cs and its standard error");
   }
   if (o.mode == CsFitMode::kLinearInParameter && params.size() < 2) {
     return fail("mode linear_in_parameter fits Cs = a + b*p but all " + std::to_string(cases.size()) +
@@ -259,19 +323,24 @@ CsCalibrationResult CalibrateCs(const CsRaoModel& model, const std::vector<Calib
   }
   auto block_of = [&](int c) -> double* { return blocks[o.mode == CsFitMode::kPerCase ? c : 0].data(); };
 
-  // Start values: the prediction must be usable (otherwise Ceres would only report a failed first evaluation).
+  // Start values: the prediction must be usable (otherwise Ceres would only report a failed first
+  // evaluation).
   std::vector<std::vector<Slot>> layouts(num_cases);
   std::vector<RaoPrediction> before(num_cases);
   for (int c = 0; c < num_cases; ++c) {
     layouts[c] = Layout(cases[c], o);
     const double Cs = CaseCs(block_of(c), block_size, cases[c].hull_parameter);
-    before[c] = model(Cs, c);
-    ++evaluations;
+    try {
+      before[c] = EvaluateModel(model, Cs, c, &evaluations);
+    } catch (const std::exception& e) {
+      throw std::domain_error("Cs calibration: the RAO model failed for case '" + cases[c].label +
+                              "' at the start value Cs = " + Fmt(Cs) + ": " + e.what());
+    }
     if (!PredictionOk(before[c], cases[c].points.size())) {
-      throw std::domain_error("Cs calibration: the RAO model returned " + std::to_string(before[c].heave.size()) +
-                              " heave and " + std::to_string(before[c].pitch.size()) +
-                              " pitch values (or a non-finite one) for case '" + cases[c].label + "' with " +
-                              std::to_string(cases[c].points.size()) + " points at Cs = " + Fmt(Cs));
+      throw std::domain_error(
+          "Cs calibration: the RAO model returned " + std::to_string(before[c].heave.size()) + " heave and " +
+          std::to_string(before[c].pitch.size()) + " pitch values (or a non-finite one) for case '" +
+          cases[c].label + "' with " + std::to_string(cases[c].points.size()) + " points at Cs = " + Fmt(Cs));
     }
   }
 
@@ -295,7 +364,8 @@ CsCalibrationResult CalibrateCs(const CsRaoModel& model, const std::vector<Calib
       ++res.num_residuals;
     }
   }
-  // Cs >= 0: a damping coefficient. For Cs = a + b·p the bound is on the line, not on a block; checked afterwards.
+  // Cs >= 0: a damping coefficient. For Cs = a + b·p the bound is on the line, not on a block; checked
+  // afterwards.
   if (block_size == 1)
     for (auto& b : blocks) problem.SetParameterLowerBound(b.data(), 0, 0.0);
 
@@ -313,8 +383,16 @@ CsCalibrationResult CalibrateCs(const CsRaoModel& model, const std::vector<Calib
   res.final_cost = summary.final_cost;
   res.ceres_brief = summary.BriefReport();
   res.ceres_full = summary.FullReport();
+  std::string model_errors;
+  for (int c = 0; c < num_cases; ++c) {
+    if (caches[c]->last_error().empty()) continue;
+    res.warnings.push_back("the RAO model failed during the fit for case '" + cases[c].label +
+                           "' (Ceres rejected that step): " + caches[c]->last_error());
+    model_errors += "; case '" + cases[c].label + "': " + caches[c]->last_error();
+  }
   if (!summary.IsSolutionUsable()) {
-    throw std::domain_error("Cs calibration: Ceres found no usable solution: " + summary.message);
+    throw std::domain_error("Cs calibration: Ceres found no usable solution: " + summary.message +
+                            model_errors);
   }
   if (!res.converged) res.warnings.push_back("Ceres did not report convergence: " + summary.message);
 
@@ -333,7 +411,8 @@ CsCalibrationResult CalibrateCs(const CsRaoModel& model, const std::vector<Calib
   res.covariance.assign(p, std::vector<double>(p, 0.0));
   {
     ceres::Covariance::Options co;
-    co.algorithm_type = ceres::DENSE_SVD;  // tiny problems; SVD also reports rank deficiency instead of failing
+    co.algorithm_type =
+        ceres::DENSE_SVD;  // tiny problems; SVD also reports rank deficiency instead of failing
     ceres::Covariance cov(co);
     std::vector<std::pair<const double*, const double*>> pairs;
     for (auto& b : blocks) pairs.emplace_back(b.data(), b.data());  // blocks are independent (per case)
@@ -344,14 +423,17 @@ CsCalibrationResult CalibrateCs(const CsRaoModel& model, const std::vector<Calib
         cov.GetCovarianceBlock(blocks[b].data(), blocks[b].data(), m.data());
         for (int i = 0; i < block_size; ++i)
           for (int j = 0; j < block_size; ++j)
-            res.covariance[b * block_size + i][b * block_size + j] = m[i * block_size + j] * res.residual_variance;
+            res.covariance[b * block_size + i][b * block_size + j] =
+                m[i * block_size + j] * res.residual_variance;
       }
     } else {
-      res.warnings.push_back("Ceres could not compute the covariance (Jacobian rank deficient: the data do not "
-                             "depend on Cs?); standard errors are reported as 0");
+      res.warnings.push_back(
+          "Ceres could not compute the covariance (Jacobian rank deficient: the data do not "
+          "depend on Cs?); standard errors are reported as 0");
     }
   }
-  for (int i = 0; i < p; ++i) res.parameter_std_errors.push_back(std::sqrt(std::max(0.0, res.covariance[i][i])));
+  for (int i = 0; i < p; ++i)
+    res.parameter_std_errors.push_back(std::sqrt(std::max(0.0, res.covariance[i][i])));
 
   // Per-case Cs, before/after residuals and peaks.
   double ss_before = 0, ss_after = 0;
@@ -372,13 +454,20 @@ CsCalibrationResult CalibrateCs(const CsRaoModel& model, const std::vector<Calib
                              "' is at its lower bound 0: the standard error ignores the bound");
     }
     if (block_size == 2 && Cs < 0) {
-      res.warnings.push_back("Cs = a + b*p is negative (" + Fmt(Cs) + ") for case '" + cc.label +
-                             "' (p = " + Fmt(cc.hull_parameter) + "): the line is not bounded, check the data");
+      res.warnings.push_back("Cs = a + b*p is negative (" + Fmt(Cs) + ") for case '" + cc.label + "' (p = " +
+                             Fmt(cc.hull_parameter) + "): the line is not bounded, check the data");
     }
-    const RaoPrediction after = model(Cs, c);
-    ++evaluations;
+    RaoPrediction after;
+    try {
+      after = EvaluateModel(model, Cs, c, &evaluations);
+    } catch (const std::exception& e) {
+      throw std::domain_error("Cs calibration: the RAO model failed at the fitted Cs = " + Fmt(Cs) + ": " +
+                              e.what());
+    }
     if (!PredictionOk(after, cc.points.size()))
       throw std::domain_error("Cs calibration: the RAO model failed at the fitted Cs = " + Fmt(Cs));
+    res.predictions_before.push_back(before[c]);
+    res.predictions_after.push_back(after);
     for (const Slot& s : layouts[c]) {
       CsPointResidual r;
       r.case_index = c;
@@ -401,7 +490,8 @@ CsCalibrationResult CalibrateCs(const CsRaoModel& model, const std::vector<Calib
       all_l = all_l && pt.has_lambda_over_L;
     }
     if (!all_w && !all_l) {
-      res.warnings.push_back("case '" + cc.label + "' mixes rows with only omega_e and only lambda_over_L: no peaks");
+      res.warnings.push_back("case '" + cc.label +
+                             "' mixes rows with only omega_e and only lambda_over_L: no peaks");
       continue;
     }
     for (int q = 0; q < 2; ++q) {
@@ -469,10 +559,10 @@ std::string CsCalibrationResult::FullReport() const {
   s << "\nPeaks (interpolated; relative error of the computed peak against the measured one):\n";
   for (const auto& pk : peaks) {
     s << "  case " << pk.case_index << " " << pk.quantity << ": measured " << Fmt(pk.measured.value, "%.4g")
-      << " at " << pk.abscissa << " " << Fmt(pk.measured.x, "%.4g") << (pk.measured.at_edge ? " (at data edge)" : "")
-      << "; before " << Fmt(pk.before.value, "%.4g") << " (" << Fmt(100 * pk.RelativeErrorBefore(), "%+.1f")
-      << "%), after " << Fmt(pk.after.value, "%.4g") << " (" << Fmt(100 * pk.RelativeErrorAfter(), "%+.1f")
-      << "%)\n";
+      << " at " << pk.abscissa << " " << Fmt(pk.measured.x, "%.4g")
+      << (pk.measured.at_edge ? " (at data edge)" : "") << "; before " << Fmt(pk.before.value, "%.4g") << " ("
+      << Fmt(100 * pk.RelativeErrorBefore(), "%+.1f") << "%), after " << Fmt(pk.after.value, "%.4g") << " ("
+      << Fmt(100 * pk.RelativeErrorAfter(), "%+.1f") << "%)\n";
   }
   s << "\nResiduals (weighted; computed before at the initial Cs, after at the fitted Cs):\n";
   s << "  source  quantity  measured  computed_before  computed_after  residual_before  residual_after\n";

@@ -1,6 +1,7 @@
-// Ceres Cs fit against closed forms: with an RAO magnitude linear in Cs, least squares is linear regression, so
-// the fitted values, the scaled covariance and the reduced chi-square have textbook formulas (solved here with
-// Eigen, independently of Ceres). Robust loss against a bisection solution of the Huber M-estimator equation.
+// Ceres Cs fit against closed forms: with an RAO magnitude linear in Cs, least squares is linear regression,
+// so the fitted values, the scaled covariance and the reduced chi-square have textbook formulas (solved here
+// with Eigen, independently of Ceres). Robust loss against a bisection solution of the Huber M-estimator
+// equation.
 #include <Eigen/Dense>
 #include <catch2/catch.hpp>
 #include <cmath>
@@ -11,8 +12,9 @@
 using namespace hullopt::opt;
 
 namespace {
-// Ceres stops on relative cost change 1e-10 / step 1e-10 and differentiates numerically (central, relative step
-// 1e-6, error ~1e-12 relative for a linear model): 1e-7 relative on the fitted values is well inside that.
+// Ceres stops on relative cost change 1e-10 / step 1e-10 and differentiates numerically (central, relative
+// step 1e-6, error ~1e-12 relative for a linear model): 1e-7 relative on the fitted values is well inside
+// that.
 constexpr double kFitTol = 1e-7;
 // Standard errors come from Ceres' SVD of J and the numeric Jacobian; 1e-6 relative.
 constexpr double kStdErrTol = 1e-6;
@@ -97,6 +99,9 @@ TEST_CASE("single Cs: weighted linear least squares in closed form", "[calibrati
   CHECK(r.converged);
   CHECK(r.covariance_ok);
   CHECK(r.case_Cs[0] == r.parameters[0]);
+  // The per-case prediction cache: one model call per distinct Cs (base and ±h per Jacobian, trial steps),
+  // not one per residual block. Without it this fit (8 blocks) would take 8× as many calls.
+  CHECK(r.model_evaluations < 8 * 3);
   REQUIRE(r.residuals.size() == 8);
   CHECK(r.residuals[1].quantity == "pitch");
   CHECK(r.residuals[1].residual_after ==
@@ -236,7 +241,8 @@ TEST_CASE("Huber loss: the M-estimator equation solved by bisection", "[calibrat
   o.loss = CsRobustLoss::kNone;
   const auto plain = CalibrateCs(m, {MakeCase("A", heave, kPitch)}, o);
   const auto clean = CalibrateCs(m, {MakeCase("A", kHeave, kPitch)}, o);
-  CHECK(std::fabs(rc.parameters[0] - clean.parameters[0]) < std::fabs(plain.parameters[0] - clean.parameters[0]));
+  CHECK(std::fabs(rc.parameters[0] - clean.parameters[0]) <
+        std::fabs(plain.parameters[0] - clean.parameters[0]));
 }
 
 TEST_CASE("bound Cs >= 0 holds and is reported", "[calibration]") {
@@ -314,7 +320,8 @@ TEST_CASE("data that cannot determine the parameters is refused", "[calibration]
   CHECK(e.find("case 'B' gives 1 residual(s)") != std::string::npos);
   o = {};
   o.mode = CsFitMode::kLinearInParameter;
-  CHECK_FALSE(CheckCalibrationData({MakeCase("A", kHeave, kPitch, 2), MakeCase("B", kHeave, kPitch, 2)}, o, &e));
+  CHECK_FALSE(
+      CheckCalibrationData({MakeCase("A", kHeave, kPitch, 2), MakeCase("B", kHeave, kPitch, 2)}, o, &e));
   CHECK(e.find("at least two hulls") != std::string::npos);
   o = {};
   o.residual_scale = CsResidualScale::kRelative;
@@ -337,4 +344,48 @@ TEST_CASE("a model returning the wrong number of points is a domain error", "[ca
     return r;
   };
   CHECK_THROWS_AS(CalibrateCs(nan, {MakeCase("A", kHeave, kPitch)}, {}), std::domain_error);
+}
+
+TEST_CASE("a model that refuses Cs < 0 works at the bound (extrapolation below 0)", "[calibration]") {
+  // Like the strip solver's MotionOptions::IsValid: Cs must be >= 0. Data above the model at Cs = 0, so the
+  // optimum is on the bound and Ceres' central difference there asks for Cs = −h.
+  const LinearModel lin = Model1();
+  CsRaoModel strict = [lin](double Cs, int c) {
+    if (Cs < 0) throw std::invalid_argument("Cs = " + std::to_string(Cs) + ": must be >= 0");
+    return lin(Cs, c);
+  };
+  const auto data = MakeCase("A", {1.1, 1.6, 2.1, 1.3}, {0.9, 1.2, 1.4, 1.0});
+  const auto r = CalibrateCs(strict, {data}, {});
+  CHECK(r.parameters[0] < 1e-9);
+  for (const auto& w : r.warnings) CHECK(w.find("failed") == std::string::npos);  // never called below 0
+  // The same fit with the unrestricted model gives the same answer.
+  const auto free = CalibrateCs(lin, {data}, {});
+  CHECK(r.parameters[0] == Approx(free.parameters[0]).margin(1e-12));
+  CHECK(r.parameter_std_errors[0] == Approx(free.parameter_std_errors[0]).epsilon(kStdErrTol));
+}
+
+TEST_CASE("a model that throws during the fit: reported, never escaping Ceres unhandled", "[calibration]") {
+  const LinearModel lin = Model1();
+  // The least-squares optimum of the data is Cs ≈ 0.05 (closed form in the first test), but the model has no
+  // solution below 0.08: Ceres' steps towards the optimum fail. Either Ceres stops at a usable point (then
+  // the failures are in the warnings) or CalibrateCs throws std::domain_error carrying the model's message;
+  // the model's exception must not cross Ceres.
+  CsRaoModel picky = [lin](double Cs, int c) {
+    if (Cs < 0.08) throw std::domain_error("no solution below 0.08");
+    return lin(Cs, c);
+  };
+  CsCalibrationOptions o;
+  o.Cs_initial = 0.12;
+  try {
+    const auto r = CalibrateCs(picky, {MakeCase("A", kHeave, kPitch)}, o);
+    CHECK(r.parameters[0] >= 0.08);
+    REQUIRE_FALSE(r.warnings.empty());
+    CHECK(r.warnings.front().find("no solution below 0.08") != std::string::npos);
+  } catch (const std::domain_error& e) {
+    CHECK(std::string(e.what()).find("no solution below 0.08") != std::string::npos);
+  }
+  // A model failing at the start value is a domain error naming the case.
+  o.Cs_initial = 0.05;
+  CHECK_THROWS_WITH(CalibrateCs(picky, {MakeCase("A", kHeave, kPitch)}, o),
+                    Catch::Contains("case 'A'") && Catch::Contains("no solution below 0.08"));
 }

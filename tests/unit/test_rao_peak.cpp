@@ -1,4 +1,5 @@
-// Interpolated RAO peak against exact parabolas (the parabola through three samples of a parabola is the parabola).
+// Interpolated RAO peak against exact parabolas (the parabola through three samples of a parabola is the
+// parabola).
 #include <catch2/catch.hpp>
 
 #include "optimizer/rao_peak.h"

@@ -1,5 +1,5 @@
-// Tank RAO CSV contract (ARCHITECTURE §4): the Delft 372 file reads as printed; bad files are refused with the
-// file, line, column and rule (issue 7 item 4).
+// Tank RAO CSV contract (ARCHITECTURE §4): the Delft 372 file reads as printed; bad files are refused with
+// the file, line, column and rule (issue 7 item 4).
 #include <catch2/catch.hpp>
 #include <filesystem>
 #include <fstream>
@@ -25,7 +25,8 @@ const std::string kDelft = std::string(HULLOPT_SOURCE_DIR) + "/data/delft372/del
 TEST_CASE("Delft 372 Fn 0.75 file reads as printed in the file", "[tank-rao]") {
   const auto pts = ReadTankRaoCsv(kDelft);
   REQUIRE(pts.size() == 13);
-  // First and last rows of data/delft372/delft372_tank_rao_fn075.csv (the extra wave_amp_mm column is ignored).
+  // First and last rows of data/delft372/delft372_tank_rao_fn075.csv (the extra wave_amp_mm column is
+  // ignored).
   CHECK(pts[0].Fn == 0.75);
   CHECK(pts[0].has_lambda_over_L);
   CHECK_FALSE(pts[0].has_omega_e);
@@ -99,7 +100,8 @@ TEST_CASE("bad tank files name file, line, column and rule", "[tank-rao][bad-inp
 
 TEST_CASE("a speed in the data that the config does not define, and a config speed without data",
           "[tank-rao][bad-input]") {
-  const auto f = Write("two_speeds.csv", "Fn,lambda_over_L,heave_rao,pitch_rao\n0.75,1.0,0.5,0.4\n0.6,1.0,0.5,0.4\n");
+  const auto f =
+      Write("two_speeds.csv", "Fn,lambda_over_L,heave_rao,pitch_rao\n0.75,1.0,0.5,0.4\n0.6,1.0,0.5,0.4\n");
   const auto pts = ReadTankRaoCsv(f);
   CHECK_THROWS_WITH(GroupTankRaoBySpeed(pts, {0.75}, "", 0.0),
                     Catch::Contains(f + ":3: column 'Fn' = 0.6: not a speed of the config (Fn 0.75)"));
