@@ -10,7 +10,7 @@ namespace {
 
 using cd = std::complex<double>;
 constexpr double kInv2Pi = 0.5 / M_PI;
-constexpr int kRulePoints = 6;  // per sub-segment; compared against the two halves for the error estimate
+constexpr int kRulePoints = 8;  // per sub-segment; compared against the two halves for the error estimate
 constexpr int kMaxDepth = 18;   // segment >= L/2^18: far below any panel feature
 
 struct Integrand {

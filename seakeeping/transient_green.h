@@ -37,10 +37,11 @@ std::complex<double> TransientGreenTimeIntegral(double Y, double Z, double t, do
 /// Complex Dawson function F(x) = e^{−x²} ∫_0^x e^{u²} du (libcerf).
 std::complex<double> Dawson(std::complex<double> x);
 
-/// Φ(x) = ∫_0^x F(u) du for |arg(±x)| <= π/4 or |x| < 6 (Taylor series for |x| <= 2.5, Gauss–Legendre of F
-/// from radius 2.5 for 2.5 < |x| < 6, asymptotic series Φ = (γ + ln 4)/4 + ½ ln x − Σ c_n/(2n x^{2n})
-/// − i(π/4) erfc(x) beyond). Φ is even and Φ(conj x) = conj Φ(x). Throws std::domain_error outside that
-/// domain.
+/// Φ(x) = ∫_0^x F(u) du for |arg(±x)| <= π/4 or |x| < 6. For |x| < 6: Taylor expansion (through the
+/// derivative recurrence of F) about the nearest node of a 0.1-spaced table of Φ and F, the table built once
+/// from the Taylor series at 0 (|x| <= 2.5) and Gauss–Legendre of F along the ray (beyond); for |x| >= 6 the
+/// asymptotic series Φ = (γ + ln 4)/4 + ½ ln x − Σ c_n/(2n x^{2n}) − i(π/4) erfc(x). Φ is even and
+/// Φ(conj x) = conj Φ(x). Throws std::domain_error outside that domain.
 std::complex<double> DawsonIntegral(std::complex<double> x);
 
 }  // namespace hullopt::sk
