@@ -61,7 +61,7 @@ std::vector<double> WaveFrequencies(const FrequencySpec& spec, double speed_m_s,
         w.push_back(v);
         break;
       case FrequencySpec::Quantity::kOmegaE:
-        w.push_back(WaveFrequencyFromEncounter(v, speed_m_s, g_m_s2));
+        w.push_back(HeadSeaWaveFrequency(v, speed_m_s, g_m_s2));
         break;
     }
   }

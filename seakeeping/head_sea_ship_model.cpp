@@ -103,7 +103,7 @@ void HeadSeaShipModel::ReportNonFinite(const std::string& what, double omega) co
   std::ostringstream os;
   os << "hull '" << (options_.hull_name.empty() ? std::string("(unnamed)") : options_.hull_name)
      << "': non-finite " << what << " at omega = " << omega
-     << " rad/s (omega_e = " << EncounterFrequency(omega, speed(), g()) << " rad/s)";
+     << " rad/s (omega_e = " << HeadSeaEncounterFrequency(omega, speed(), g()) << " rad/s)";
   throw std::domain_error(os.str());
 }
 

@@ -4,16 +4,6 @@
 
 namespace hullopt::sk {
 
-double EncounterFrequency(double omega_rad_s, double speed_m_s, double g_m_s2) {
-  return omega_rad_s + omega_rad_s * omega_rad_s * speed_m_s / g_m_s2;
-}
-
-double WaveFrequencyFromEncounter(double omega_e_rad_s, double speed_m_s, double g_m_s2) {
-  if (speed_m_s == 0.0) return omega_e_rad_s;
-  // Root of (U/g) ω² + ω − ω_e = 0 written without cancellation: ω = 2ω_e / (1 + √(1 + 4Uω_e/g)).
-  return 2.0 * omega_e_rad_s / (1.0 + std::sqrt(1.0 + 4.0 * speed_m_s * omega_e_rad_s / g_m_s2));
-}
-
 double WaveFrequencyFromLength(double wave_length_m, double g_m_s2) {
   return std::sqrt(2.0 * M_PI * g_m_s2 / wave_length_m);
 }
@@ -25,7 +15,8 @@ double WaveLength(double omega_rad_s, double g_m_s2) {
 HeadSea::HeadSea(std::vector<WaveComponent> components, double speed_m_s, double g_m_s2)
     : components_(std::move(components)) {
   for (const auto& c : components_)
-    terms_.push_back({c.amplitude_m, c.omega_rad_s, EncounterFrequency(c.omega_rad_s, speed_m_s, g_m_s2),
+    terms_.push_back({c.amplitude_m, c.omega_rad_s,
+                      HeadSeaEncounterFrequency(c.omega_rad_s, speed_m_s, g_m_s2),
                       c.omega_rad_s * c.omega_rad_s / g_m_s2, c.phase_rad});
 }
 

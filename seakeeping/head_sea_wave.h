@@ -12,13 +12,11 @@
 // in head seas, and the longitudinal one lies outside the strip plane.
 #include <vector>
 
+#include "seakeeping/encounter_frequency.h"
+
 namespace hullopt::sk {
 
-/// Encounter frequency ω_e = ω + ω²U/g in head seas [rad/s].
-double EncounterFrequency(double omega_rad_s, double speed_m_s, double g_m_s2);
-/// Inverse of EncounterFrequency: the wave frequency ω [rad/s] of encounter frequency ω_e (the positive root
-/// of ω²U/g + ω − ω_e = 0; ω = ω_e when U = 0).
-double WaveFrequencyFromEncounter(double omega_e_rad_s, double speed_m_s, double g_m_s2);
+// Encounter frequency: HeadSeaEncounterFrequency / HeadSeaWaveFrequency in encounter_frequency.h.
 /// Deep-water wave frequency ω [rad/s] of wave length λ [m]: ω = √(2πg/λ).
 double WaveFrequencyFromLength(double wave_length_m, double g_m_s2);
 /// Deep-water wave length λ = 2πg/ω² [m].

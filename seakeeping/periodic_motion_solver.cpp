@@ -42,7 +42,7 @@ RaoTable SolvePeriodicRaos(const HeadSeaShipModel& model, const std::vector<doub
 #pragma omp parallel for schedule(dynamic)
   for (int f = 0; f < nf; ++f) {
     const double w = omega_rad_s[f];
-    const double we = EncounterFrequency(w, U, g);
+    const double we = HeadSeaEncounterFrequency(w, U, g);
     const double k = w * w / g;
     const cd iwe(0.0, we), iw(0.0, w);
     std::vector<cd> lag(N);  // e^{−iω_e j Δt}

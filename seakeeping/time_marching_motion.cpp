@@ -51,7 +51,7 @@ void TimeMarcher::Start(const std::vector<WaveComponent>& sea, double ramp_s) {
   omega_e_.clear();
   for (const auto& c : sea) {
     k_.push_back(c.omega_rad_s * c.omega_rad_s / g);
-    omega_e_.push_back(EncounterFrequency(c.omega_rad_s, U, g));
+    omega_e_.push_back(HeadSeaEncounterFrequency(c.omega_rad_s, U, g));
   }
   const auto& st = model_.stations();
   fk_width_.assign(st.size(), std::vector<double>(sea.size()));
@@ -184,7 +184,7 @@ RaoTable SolveMarchingRaos(const HeadSeaShipModel& model, StripForceModel& force
   for (double w : omega_rad_s) {
     if (!(w > 0.0) || !std::isfinite(w))
       throw std::invalid_argument("RAO sweep: wave frequency " + std::to_string(w) + " rad/s must be > 0");
-    const double we = EncounterFrequency(w, model.speed(), model.g());
+    const double we = HeadSeaEncounterFrequency(w, model.speed(), model.g());
     const double k = w * w / model.g();
     const double period = 2.0 * M_PI / we;
     marcher.Start({{1.0, w, 0.0}}, options.ramp_periods * period);

@@ -11,10 +11,10 @@ namespace sk = hullopt::sk;
 TEST_CASE("encounter frequency and its inverse", "[frequency]") {
   const double U = 10.0, g = 9.81;
   // ω_e = ω + ω²U/g by hand: ω = 1 → 1 + 10/9.81.
-  CHECK(sk::EncounterFrequency(1.0, U, g) == Approx(1.0 + 10.0 / 9.81).epsilon(1e-15));
+  CHECK(sk::HeadSeaEncounterFrequency(1.0, U, g) == Approx(1.0 + 10.0 / 9.81).epsilon(1e-15));
   for (double w : {0.01, 0.5, 1.0, 3.0, 10.0})
-    CHECK(sk::WaveFrequencyFromEncounter(sk::EncounterFrequency(w, U, g), U, g) == Approx(w).epsilon(1e-13));
-  CHECK(sk::WaveFrequencyFromEncounter(2.0, 0.0, g) == 2.0);
+    CHECK(sk::HeadSeaWaveFrequency(sk::HeadSeaEncounterFrequency(w, U, g), U, g) == Approx(w).epsilon(1e-13));
+  CHECK(sk::HeadSeaWaveFrequency(2.0, 0.0, g) == 2.0);
   // λ = 2πg/ω²: λ = 2π·9.81 m ↔ ω = 1.
   CHECK(sk::WaveFrequencyFromLength(2 * M_PI * g, g) == Approx(1.0).epsilon(1e-15));
 }
@@ -32,7 +32,7 @@ TEST_CASE("frequency specs convert to increasing wave frequencies", "[frequency]
   REQUIRE(r.values.size() == 6);
   CHECK(r.values[1] == Approx(4.0));
   const auto we = sk::WaveFrequencies(r, U, g, L);
-  CHECK(sk::EncounterFrequency(we.back(), U, g) == Approx(12.0));
+  CHECK(sk::HeadSeaEncounterFrequency(we.back(), U, g) == Approx(12.0));
 }
 
 TEST_CASE("empty or non-positive frequency lists are refused", "[frequency][errors]") {

@@ -71,7 +71,7 @@ std::pair<cd, cd> ContinuousRao(const BoxHull& h, double a, double cs, double w)
 
 std::vector<double> OmegaFromEncounter(const std::vector<double>& we, double U, double g) {
   std::vector<double> w;
-  for (double e : we) w.push_back(sk::WaveFrequencyFromEncounter(e, U, g));
+  for (double e : we) w.push_back(sk::HeadSeaWaveFrequency(e, U, g));
   return w;
 }
 
@@ -167,7 +167,7 @@ TEST_CASE("weighted average: explicit update diverges when added mass exceeds sh
   opt.damping_cs = 0.1;
   const sk::HeadSeaShipModel model(kernel, BoxMass(h), opt);
   sk::KernelStripForceModel forces(kernel);
-  const std::vector<double> w = {sk::WaveFrequencyFromEncounter(3.0, h.speed, h.g)};
+  const std::vector<double> w = {sk::HeadSeaWaveFrequency(3.0, h.speed, h.g)};
   sk::MarchingOptions explicit_update;
   explicit_update.hydrodynamic_fraction = 1.0;
   explicit_update.max_passes = 1;
