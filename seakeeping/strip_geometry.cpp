@@ -44,7 +44,8 @@ StripKernel StripKernelGeometry(const hull::HullForm& hull, const StripGeometryO
   for (std::size_t b = 0; b < hull.bodies.size(); ++b)
     if (options.body < 0 || options.body == static_cast<int>(b)) bodies.push_back(&hull.bodies[b]);
   double x_aft = std::numeric_limits<double>::infinity(), x_fwd = -x_aft;
-  for (const auto* b : bodies) {
+  for (const auto& body : hull.bodies) {  // the strip grid spans all bodies, so per-body kernels line up
+    const auto* b = &body;
     if (b->stations.empty()) continue;
     x_aft = std::min(x_aft, b->stations.front().x_m);
     x_fwd = std::max(x_fwd, b->stations.back().x_m);

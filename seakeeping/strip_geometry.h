@@ -2,9 +2,10 @@
 // From a HullForm to the panelled sections a strip of water passes through (the geometry half of a
 // StripKernel). The strip advances Δx = L_span/sections per step; step n holds the hull at the strip midpoint
 // x_n = x_fwd − (n + ½)Δx [m from AP], from the bow (n = 0) to the stern (n = sections − 1), where x_fwd and
-// x_aft are the extreme stations of all bodies. Each body's section at x_n (hull::InterpolateStation) is cut
-// at the design draught (hull::WettedContour), shifted to z = 0 at the waterline and panelled
-// (PanelSymmetricSection) at its centreline; mirror pairs (y_centre > 0) get one panelled section each side.
+// x_aft are the extreme stations of all bodies of the hull (also when only one body is panelled). Each body's
+// section at x_n (hull::InterpolateStation) is cut at the design draught (hull::WettedContour), shifted to z
+// = 0 at the waterline and panelled (PanelSymmetricSection) at its centreline; mirror pairs (y_centre > 0)
+// get one panelled section each side.
 #include <string>
 #include <vector>
 

@@ -5,7 +5,9 @@
 
 #include "parametric_hull/hydrostatics.h"
 #include "seakeeping/head_sea_ship_model.h"
+#include "seakeeping/impulsive_strip_kernel.h"
 #include "seakeeping/periodic_motion_solver.h"
+#include "seakeeping/rao_solver.h"
 #include "seakeeping/strip_geometry.h"
 #include "support/box_strip_kernel.h"
 
@@ -105,5 +107,27 @@ TEST_CASE("independent kernels combine to the sum of their forces", "[strip_geom
   for (std::size_t i = 0; i < w.size(); ++i) {
     CHECK(std::abs(ra.heave[i] - rc.heave[i]) < 1e-12 * std::abs(ra.heave[i]) + 1e-14);
     CHECK(std::abs(ra.pitch[i] - rc.pitch[i]) < 1e-12 * std::abs(ra.pitch[i]) + 1e-14);
+  }
+}
+
+TEST_CASE("demihulls far apart: with and without interaction agree", "[strip_geometry][interaction]") {
+  hull::HullForm h;
+  h.type = "catamaran";
+  h.draught_m = 0.5;
+  h.length_m = 10;
+  h.bodies.push_back(BoxBody(10, 1, 0.5, 200.0, 1.0));  // 400 m apart: interaction ~ (B/d)² ≈ 1e-5
+  sk::RaoSolverOptions o;
+  o.sections = 20;
+  o.panels = 8;
+  o.motion.damping_cs = 0.05;
+  const hull::MassProperties mass{2 * 1025.0 * 10 * 1 * 0.5, 5.0, 2.5, 0.0};
+  const std::vector<double> w = {1.0, 2.0, 3.0};
+  const auto with = sk::ComputeRaos(h, mass, 7.9, 1025.0, 9.81, w, o, sk::FillImpulsiveStripKernel);
+  o.interaction = false;
+  const auto without = sk::ComputeRaos(h, mass, 7.9, 1025.0, 9.81, w, o, sk::FillImpulsiveStripKernel);
+  constexpr double kFarTol = 1e-3;
+  for (std::size_t i = 0; i < w.size(); ++i) {
+    CHECK(std::abs(with.heave[i] - without.heave[i]) < kFarTol * std::abs(with.heave[i]));
+    CHECK(std::abs(with.pitch[i] - without.pitch[i]) < kFarTol * std::abs(with.pitch[i]));
   }
 }
