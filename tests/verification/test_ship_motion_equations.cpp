@@ -11,6 +11,7 @@
 #include "seakeeping/head_sea_wave.h"
 #include "seakeeping/periodic_motion_solver.h"
 #include "seakeeping/strip_force_model.h"
+#include "seakeeping/strip_theory_stf.h"
 #include "seakeeping/time_marching_motion.h"
 #include "support/box_strip_kernel.h"
 
@@ -43,7 +44,8 @@ cd Integrate(const std::function<cd(double)>& f, double a, double b, int n = 200
 // −a(iω_e − U∂x)ũ with the bow impulse −aUũ(bow), ũ = iω_e(X3 − xX5) + UX5 − iω e^{−kT} e^{ikx}.
 // Integrated by parts: F3,kernel = −a iω_e ∫ũ − aU ũ(stern), F5,kernel = a iω_e ∫xũ + aU x_s ũ(stern) + aU
 // ∫ũ.
-std::pair<cd, cd> ContinuousRao(const BoxHull& h, double a, double cs, double w) {
+// a may be complex: a frequency-domain impedance Z = a33 + b33/(iω_e), constant along the box.
+std::pair<cd, cd> ContinuousRao(const BoxHull& h, cd a, double cs, double w) {
   const double U = h.speed, g = h.g, rho = h.rho, B = h.B, T = h.T;
   const double we = w + w * w * U / g, k = w * w / g, c = 0.5 * cs * rho * U;
   const double xs = -0.5 * h.L, xb = 0.5 * h.L;
@@ -260,4 +262,45 @@ TEST_CASE("irregular sea: marched time series is the superposition of periodic R
     z += c.amplitude_m *
          std::cos(sk::HeadSeaEncounterFrequency(c.omega_rad_s, h.speed, h.g) * ts.t_s[last] + c.phase_rad);
   CHECK(ts.wave_at_cg_m[last] == Approx(z).margin(1e-12));
+}
+
+TEST_CASE("strip theory (STF) path: the momentum kernel exactly, and the continuous closed form with damping",
+          "[motions][stf]") {
+  BoxHull h;
+  h.sections = 400;
+  const double a = 400.0, b = 900.0, cs = 0.1;  // b: a constant 2D heave damping [kg/(m s)]
+  const auto geometry = BoxKernel(h, 0.0);
+  sk::MotionOptions opt;
+  opt.damping_cs = cs;
+  const sk::HeadSeaShipModel model(geometry, BoxMass(h), opt);
+  std::vector<double> we;
+  for (double e = 1.0; e <= 9.0; e += 1.0) we.push_back(e);
+  const auto w = OmegaFromEncounter(we, h.speed, h.g);
+  // (1) b = 0: the rows −iω_e a c/(iω_e Δt) are the box momentum kernel's rows; same numbers.
+  const auto stf0 = sk::SolveStripTheoryRaos(model, w, [&](int n, double omega_e) {
+    return sk::UniformHeaveRow(geometry.panels[n], a, 0.0, omega_e);
+  });
+  const auto momentum = BoxKernel(h, a);
+  const sk::HeadSeaShipModel kmodel(momentum, BoxMass(h), opt);
+  const auto ref0 = sk::SolvePeriodicRaos(kmodel, w);
+  for (std::size_t i = 0; i < w.size(); ++i) {
+    CHECK(std::abs(stf0.heave[i] - ref0.heave[i]) < 1e-10 * std::abs(ref0.heave[i]));  // round-off only
+    CHECK(std::abs(stf0.pitch[i] - ref0.pitch[i]) < 1e-10 * std::abs(ref0.pitch[i]));
+  }
+  // (2) b > 0: against the continuous equations with Z = a + b/(iω_e) (1% of the peak, as above: O(Δx/L)).
+  const auto stf = sk::SolveStripTheoryRaos(model, w, [&](int n, double omega_e) {
+    return sk::UniformHeaveRow(geometry.panels[n], a, b, omega_e);
+  });
+  std::vector<std::pair<cd, cd>> ref;
+  double peak3 = 0, peak5 = 0;
+  for (std::size_t i = 0; i < w.size(); ++i) {
+    ref.push_back(ContinuousRao(h, cd(a, -b / we[i]), cs, w[i]));
+    peak3 = std::max(peak3, std::abs(ref.back().first));
+    peak5 = std::max(peak5, std::abs(ref.back().second));
+  }
+  for (std::size_t i = 0; i < w.size(); ++i) {
+    INFO("omega_e = " << we[i]);
+    CHECK(std::abs(stf.heave[i] - ref[i].first) < 1e-2 * peak3);
+    CHECK(std::abs(stf.pitch[i] - ref[i].second) < 1e-2 * peak5);
+  }
 }
