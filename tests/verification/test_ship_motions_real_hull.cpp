@@ -80,3 +80,27 @@ TEST_CASE("Delft 372: heave and pitch RAOs tend to 1 in long waves", "[motions][
   CHECK(std::abs(std::abs(r.heave[0]) - 1.0) < kLimitTol);
   CHECK(std::abs(std::abs(r.pitch[0]) - 1.0) < kLimitTol);
 }
+
+#ifdef _OPENMP
+#include <omp.h>
+TEST_CASE("Delft 372: identical results with 1 and 2 threads", "[motions][delft372][threads]") {
+  const int saved = omp_get_max_threads();
+  std::vector<sk::RaoTable> r;
+  std::vector<sk::StripKernel> k;
+  for (int threads : {1, 2}) {
+    omp_set_num_threads(threads);
+    k.push_back(Delft372Kernel(20, 8));
+    sk::MotionOptions mo;
+    mo.damping_cs = 0.024;
+    const sk::HeadSeaShipModel model(k.back(), hullopt::testing::Delft372Mass(), mo);
+    r.push_back(sk::SolvePeriodicRaos(model, {2.0, 3.0, 4.0, 5.0}));
+  }
+  omp_set_num_threads(saved);
+  for (int n = 0; n < k[0].Steps(); ++n)
+    for (int m = 0; m <= n; ++m) CHECK(k[0].force[n][m] == k[1].force[n][m]);  // bitwise
+  for (std::size_t i = 0; i < r[0].heave.size(); ++i) {
+    CHECK(r[0].heave[i] == r[1].heave[i]);
+    CHECK(r[0].pitch[i] == r[1].pitch[i]);
+  }
+}
+#endif
