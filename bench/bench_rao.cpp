@@ -13,10 +13,13 @@
 
 #include "seakeeping/frequency_list.h"
 #include "seakeeping/head_sea_ship_model.h"
+#include "seakeeping/impulsive_strip_kernel.h"
 #include "seakeeping/periodic_motion_solver.h"
 #include "seakeeping/strip_force_model.h"
+#include "seakeeping/strip_geometry.h"
 #include "seakeeping/time_marching_motion.h"
 #include "tests/support/box_strip_kernel.h"
+#include "tests/support/delft372_hull.h"
 
 namespace sk = hullopt::sk;
 
@@ -71,6 +74,31 @@ void BM_TimeMarchingSweep(benchmark::State& state) {
   for (auto _ : state) benchmark::DoNotOptimize(sk::SolveMarchingRaos(model, forces, s.omega, mo));
 }
 BENCHMARK(BM_TimeMarchingSweep)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(1)->Repetitions(3);
+
+// End to end on a real demihull (Delft 372, one demihull alone, 40 × 14): geometry, kernel (impulsive
+// stand-in until the transient-Green-function kernel is wired in) and the 60-frequency periodic sweep.
+void BM_Delft372DemihullSweep(benchmark::State& state) {
+#ifdef _OPENMP
+  omp_set_num_threads(static_cast<int>(state.range(0)));
+#endif
+  const auto hull = hullopt::testing::Delft372Hull(HULLOPT_SOURCE_DIR);
+  const double U = 0.75 * std::sqrt(9.81 * 3.0);
+  const auto omega = sk::WaveFrequencies(
+      sk::FrequencySpec::Range(sk::FrequencySpec::Quantity::kOmegaE, 3.0, 25.0, 60), U, 9.81, 3.0);
+  hullopt::hull::MassProperties mass = hullopt::testing::Delft372Mass();
+  mass.mass_kg *= 0.5;
+  sk::StripGeometryOptions o;
+  o.body = 0;
+  sk::MotionOptions mo;
+  mo.damping_cs = 0.024;
+  for (auto _ : state) {
+    auto k = sk::StripKernelGeometry(hull, o, U, 1000.0, 9.81);
+    sk::FillImpulsiveStripKernel(&k);
+    const sk::HeadSeaShipModel model(k, mass, mo);
+    benchmark::DoNotOptimize(sk::SolvePeriodicRaos(model, omega));
+  }
+}
+BENCHMARK(BM_Delft372DemihullSweep)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 }  // namespace
 
