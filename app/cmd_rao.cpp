@@ -125,12 +125,23 @@ void RunRao(const std::string& config_file, const std::string& out_dir) {
   auto hull_map = root.Map("hull");
   std::string hull_name;
   const hull::HullForm hull = ParseHull(hull_map, config_file, &hull_name);
-  const auto hs = hull::ComputeHydrostatics(hull, rho);
+  auto solver_peek = root.Map("solver");
+  hull::Hydrostatics hs;
+  try {
+    // Sections first: a section that does not reach the waterline is named with its body and station.
+    sk::StripGeometryOptions geo;
+    geo.sections = solver_peek.Has("sections") ? solver_peek.Integer("sections") : 40;
+    geo.panels = solver_peek.Has("panels") ? solver_peek.Integer("panels") : 14;
+    if (geo.IsValid(nullptr)) sk::StripKernelGeometry(hull, geo, 1.0, rho, g);
+    hs = hull::ComputeHydrostatics(hull, rho);
+  } catch (const std::exception& e) {
+    throw io::InputError("hull '" + hull_name + "': " + e.what());
+  }
   auto mass_map = root.MapOrEmpty("mass");
   const hull::MassProperties mass = io::ParseMassConfig(mass_map, hs);
   auto speed_map = root.Map("speed");
   const double U = ParseSpeed(speed_map, hs.L_m, g);
-  auto solver_map = root.Map("solver");
+  auto& solver_map = solver_peek;
   const std::string kernel_kind =
       solver_map.Choice("kernel", {"transient_green", "impulsive"}, "transient_green");
   const io::SolverConfig sc = io::ParseSolverConfig(solver_map);

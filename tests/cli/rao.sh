@@ -40,4 +40,9 @@ expect_error empty_list "$(base "{ Fn: 0.75 }" "{ omega_rad_s: [] }")" "omega_ra
 expect_error negative_freq "$(base "{ Fn: 0.75 }" "{ omega_e_rad_s: [2.0, -1.0] }")" "> 0"
 expect_error unknown_key "$(base "{ Fn: 0.75 }" "{ omega_rad_s: [2.0] }")
 extra_key: 1" "extra_key"
+# A hull whose sections stop below the draught (deck edge under water): named body and station.
+printf 'x_m,y_m,z_m\n0,0,0\n0,0.5,0.1\n1,0,0\n1,0.5,0.1\n2,0,0\n2,0.5,0.1\n' > "$tmp/low.csv"
+expect_error low_deck "hull: { offsets_csv: $tmp/low.csv, draught_m: 0.2 }
+speed: { m_s: 2.0 }
+solver: { kernel: impulsive, sections: 10, panels: 6, frequencies: { omega_rad_s: [2.0] } }" "does not reach the waterline"
 echo "rao CLI: all checks passed"
