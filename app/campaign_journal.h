@@ -1,0 +1,65 @@
+#pragma once
+// The durable log of a campaign (history.csv or samples.csv) and its resume logic: on start, rows already in
+// the file are read back (an incomplete last line from a kill is discarded) and offered for replay; rows are
+// appended and fsync'd one by one as evaluations complete; a log made with a different config is refused.
+// Under MPI, rank 0 reads and writes the file; the logged rows are broadcast so every rank can replay.
+#include <map>
+#include <memory>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "io/history_csv.h"
+#include "optimizer/constraint_set.h"
+#include "optimizer/evaluation_record.h"
+
+namespace hullopt::app {
+
+class CampaignJournal {
+ public:
+  /// Collective. Reads DIR/file and DIR/file.config_hash on rank 0 and shares them. Throws io::InputError if
+  /// the log exists but was made with a different config (hash of config.resolved.yaml), or is damaged.
+  CampaignJournal(const std::string& dir, const std::string& file, io::HistoryLayout layout,
+                  const std::string& config_hash, const opt::ConstraintSet& constraints, std::size_t quantities);
+  ~CampaignJournal();
+
+  /// Rank 0: opens the file for appending (dropping an incomplete last line, writing the header if new) and
+  /// records the config hash. Call after the output folder is prepared, before the first evaluation.
+  void StartWriting();
+
+  /// Replay source for the optimiser / sampler: the logged record of (run, step) or nullptr.
+  opt::ReplayLookup Replay() const;
+  long logged() const { return static_cast<long>(logged_.size()); }
+  bool truncated_tail() const { return truncated_tail_; }
+
+  /// Rank 0: takes the next evaluation in sequence order; appends it unless it is already in the file.
+  /// Returns its evaluation number.
+  long Add(const opt::EvaluationRecord& rec);
+  /// All records taken by Add, in order (rank 0).
+  const std::vector<opt::EvaluationRecord>& records() const { return records_; }
+  long replayed() const { return replayed_; }
+
+  /// Transport between MPI ranks: a record as one history row (evaluation number 0) and back.
+  std::string Serialise(const opt::EvaluationRecord& rec) const;
+  opt::EvaluationRecord Deserialise(const std::string& line) const;
+
+  const io::HistoryLayout& layout() const { return layout_; }
+  const std::string& path() const { return path_; }
+
+ private:
+  opt::EvaluationRecord FromRow(const io::HistoryRow& row) const;
+
+  std::string dir_, path_, hash_path_, config_hash_;
+  io::HistoryLayout layout_;
+  const opt::ConstraintSet& constraints_;
+  std::size_t quantities_;
+  std::vector<opt::EvaluationRecord> logged_;
+  std::map<std::pair<int, int>, std::size_t> index_;
+  std::size_t valid_bytes_ = 0;
+  bool truncated_tail_ = false;
+  std::unique_ptr<io::HistoryAppender> appender_;
+  std::vector<opt::EvaluationRecord> records_;
+  long replayed_ = 0;
+};
+
+}  // namespace hullopt::app

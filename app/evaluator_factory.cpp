@@ -1,0 +1,29 @@
+#include "app/evaluator_factory.h"
+
+#include "io/input_error.h"
+#include "optimizer/analytic_objectives.h"
+
+namespace hullopt::app {
+
+std::unique_ptr<opt::Evaluator> MakeEvaluator(io::YamlMap& root, io::YamlMap& block,
+                                              const opt::CampaignDefinition& campaign) {
+  io::YamlMap objective = block.MapOrEmpty("objective");
+  if (!objective.Has("analytic")) {
+    throw io::InputError(block.Where("objective") +
+                         ": the MSI objective is not available in this version yet; for a test or demo "
+                         "campaign use objective: { analytic: sphere|rosenbrock|rastrigin|linear }");
+  }
+  opt::AnalyticObjectiveOptions o;
+  o.function = objective.Choice("analytic", opt::AnalyticFunctionNames());
+  o.dimension = static_cast<int>(campaign.variables.size());
+  o.eval_delay_ms = objective.Number("eval_delay_ms", o.eval_delay_ms);
+  o.refuse_above_sum = objective.Number("refuse_above_sum", o.refuse_above_sum);
+  objective.Finish();
+  std::string error;
+  if (!o.IsValid(&error)) throw io::InputError(block.Where("objective") + ": " + error);
+  // The analytic objective ignores the ship description; accept a full config so demos can reuse one.
+  for (const char* k : {"hull", "mass", "speed", "water", "solver", "seas", "section", "calibrate"}) root.Skip(k);
+  return std::make_unique<opt::AnalyticEvaluator>(o);
+}
+
+}  // namespace hullopt::app

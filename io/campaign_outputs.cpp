@@ -1,0 +1,80 @@
+#include "io/campaign_outputs.h"
+
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <fstream>
+#include <sstream>
+
+#include "io/input_error.h"
+
+namespace hullopt::io {
+
+std::string TextHash(const std::string& text) {
+  std::uint64_t h = 0xcbf29ce484222325ULL;
+  for (unsigned char c : text) {
+    h ^= c;
+    h *= 0x100000001b3ULL;
+  }
+  char buf[17];
+  std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(h));
+  return buf;
+}
+
+void WriteJson(const std::string& path, const nlohmann::json& json) {
+  std::ofstream out(path);
+  if (!out) throw InputError(path + ": cannot write");
+  out << json.dump(2) << "\n";
+}
+
+void WriteBestYaml(const std::string& path, const YAML::Node& base_config, const std::string& block,
+                   const std::vector<std::string>& names, const std::vector<std::string>& start_source,
+                   const std::vector<double>& best_x, const std::string& comment) {
+  YAML::Node cfg = YAML::Clone(base_config);
+  for (std::size_t i = 0; i < names.size(); ++i) {
+    if (start_source[i] == "hull.parametric") {
+      cfg["hull"]["parametric"][names[i]] = best_x[i];
+    } else {
+      cfg[block]["start"][names[i]] = best_x[i];
+    }
+  }
+  YAML::Emitter em;
+  em.SetDoublePrecision(17);
+  em << cfg;
+  std::ofstream out(path);
+  if (!out) throw InputError(path + ": cannot write");
+  out << "# " << comment << "\n" << em.c_str() << "\n";
+}
+
+void WriteSensitivityCsv(const std::string& path, const std::vector<std::string>& names,
+                         const opt::SensitivityResult& s) {
+  std::ofstream out(path);
+  if (!out) throw InputError(path + ": cannot write");
+  out << "variable,src,first_order_sobol\n";
+  char buf[96];
+  for (std::size_t i = 0; i < names.size(); ++i) {
+    std::snprintf(buf, sizeof buf, ",%.9g,%.9g\n", s.src[i], s.first_order[i]);
+    out << names[i] << buf;
+  }
+}
+
+std::string ReadTextFile(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) return "";
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+void WriteTextFileDurably(const std::string& path, const std::string& text) {
+  const int fd = ::open(path.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  if (fd < 0) throw InputError(path + ": cannot write: " + std::strerror(errno));
+  const bool ok = ::write(fd, text.data(), text.size()) == static_cast<ssize_t>(text.size()) && ::fsync(fd) == 0;
+  ::close(fd);
+  if (!ok) throw InputError(path + ": write failed: " + std::strerror(errno));
+}
+
+}  // namespace hullopt::io

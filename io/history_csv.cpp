@@ -1,0 +1,191 @@
+#include "io/history_csv.h"
+
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <fstream>
+#include <sstream>
+
+#include "io/input_error.h"
+
+namespace hullopt::io {
+namespace {
+
+std::string Exact(double v) {
+  if (std::isnan(v)) return "nan";
+  char buf[40];
+  std::snprintf(buf, sizeof buf, "%.17g", v);
+  return buf;
+}
+
+std::string Sanitise(const std::string& s) {
+  std::string out;
+  for (char c : s) out += (c == ',' ? ';' : (c == '\n' || c == '\r' || c == '"') ? ' ' : c);
+  return out;
+}
+
+std::vector<std::string> Split(const std::string& line) {
+  std::vector<std::string> out;
+  std::string cur;
+  for (char c : line) {
+    if (c == ',') {
+      out.push_back(cur);
+      cur.clear();
+    } else {
+      cur += c;
+    }
+  }
+  out.push_back(cur);
+  return out;
+}
+
+}  // namespace
+
+std::string HistoryLayout::Header() const {
+  std::string h = "evaluation";
+  for (const auto& v : variables) h += "," + v;
+  h += ",objective,feasible";
+  for (const auto& s : seas) h += "," + s;
+  for (const auto& q : quantities) h += "," + q;
+  h += ",wall_time_s,run,step,message";
+  return h;
+}
+
+std::string FormatHistoryRow(long evaluation, const opt::EvaluationRecord& rec,
+                             const std::vector<double>& reported, const HistoryLayout& layout) {
+  const bool produced = rec.result.produced;
+  std::string row = std::to_string(evaluation);
+  for (double x : rec.x) row += "," + Exact(x);
+  row += "," + (produced ? Exact(rec.result.objective) : std::string("nan"));
+  row += rec.feasible ? ",1" : ",0";
+  for (std::size_t i = 0; i < layout.seas.size(); ++i)
+    row += "," + (produced ? Exact(rec.result.sea_values[i]) : std::string("nan"));
+  for (std::size_t i = 0; i < layout.quantities.size(); ++i)
+    row += "," + (produced ? Exact(reported[i]) : std::string("nan"));
+  char wall[32];
+  std::snprintf(wall, sizeof wall, "%.6g", rec.wall_time_s);
+  row += std::string(",") + wall + "," + std::to_string(rec.run) + "," + std::to_string(rec.step) + "," +
+         Sanitise(produced ? std::string() : rec.result.error) + "\n";
+  return row;
+}
+
+HistoryRow ParseHistoryRow(const std::string& line, const HistoryLayout& layout, const std::string& where) {
+  const std::size_t nv = layout.variables.size(), ns = layout.seas.size(), nq = layout.quantities.size();
+  const std::size_t ncols = 1 + nv + 2 + ns + nq + 4;
+  const auto f = Split(line);
+  auto bad = [&](const std::string& why) {
+    throw InputError(where + ": " + why + " (the file is damaged; delete it to start the campaign over)");
+  };
+  if (f.size() != ncols) bad("expected " + std::to_string(ncols) + " columns, found " + std::to_string(f.size()));
+  auto num = [&](const std::string& s) {
+    char* e = nullptr;
+    const double v = std::strtod(s.c_str(), &e);
+    if (s.empty() || *e != '\0') bad("'" + s + "' is not a number");
+    return v;
+  };
+  auto integer = [&](const std::string& s) {
+    char* e = nullptr;
+    const long v = std::strtol(s.c_str(), &e, 10);
+    if (s.empty() || *e != '\0') bad("'" + s + "' is not a whole number");
+    return v;
+  };
+  HistoryRow row;
+  row.evaluation = integer(f[0]);
+  std::size_t c = 1;
+  opt::EvaluationRecord& r = row.record;
+  for (std::size_t i = 0; i < nv; ++i) r.x.push_back(num(f[c++]));
+  r.result.objective = num(f[c++]);
+  r.feasible = f[c++] == "1";
+  for (std::size_t i = 0; i < ns; ++i) r.result.sea_values.push_back(num(f[c++]));
+  for (std::size_t i = 0; i < nq; ++i) row.reported.push_back(num(f[c++]));
+  r.wall_time_s = num(f[c++]);
+  r.run = static_cast<int>(integer(f[c++]));
+  r.step = static_cast<int>(integer(f[c++]));
+  r.result.error = f[c++];
+  r.result.produced = r.result.error.empty();
+  if (!r.result.produced) {
+    r.result.sea_values.clear();
+    row.reported.clear();
+  }
+  return row;
+}
+
+HistoryFile ReadHistory(const std::string& path, const HistoryLayout& layout) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return HistoryFile{};
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ParseHistory(ss.str(), path, layout);
+}
+
+HistoryFile ParseHistory(const std::string& text, const std::string& path, const HistoryLayout& layout) {
+  HistoryFile out;
+  const std::size_t header_end = text.find('\n');
+  if (header_end == std::string::npos) return out;  // empty, or killed while writing the header
+  const std::string header = text.substr(0, header_end);
+  if (header != layout.Header()) {
+    throw InputError(path + ":1: columns differ from this campaign's (" + layout.Header() +
+                     "); it belongs to another campaign: use another --out folder or delete the file");
+  }
+  out.exists = true;
+  out.valid_bytes = header_end + 1;
+  std::size_t pos = header_end + 1;
+  int line_no = 1;
+  while (pos < text.size()) {
+    const std::size_t end = text.find('\n', pos);
+    if (end == std::string::npos) {  // incomplete last line: the process was killed while writing it
+      out.truncated_tail = true;
+      break;
+    }
+    ++line_no;
+    const std::string where = path + ":" + std::to_string(line_no);
+    HistoryRow row = ParseHistoryRow(text.substr(pos, end - pos), layout, where);
+    if (row.evaluation != static_cast<long>(out.rows.size())) {
+      throw InputError(where + ": evaluation " + std::to_string(row.evaluation) + " out of sequence (expected " +
+                       std::to_string(out.rows.size()) + "; the file is damaged)");
+    }
+    out.rows.push_back(std::move(row));
+    out.valid_bytes = end + 1;
+    pos = end + 1;
+  }
+  return out;
+}
+
+HistoryAppender::HistoryAppender(const std::string& path, const HistoryLayout& layout, std::size_t keep_bytes)
+    : path_(path) {
+  fd_ = ::open(path.c_str(), O_WRONLY | O_CREAT, 0644);
+  if (fd_ < 0) throw InputError(path + ": cannot open for writing: " + std::strerror(errno));
+  if (::ftruncate(fd_, static_cast<off_t>(keep_bytes)) != 0 ||
+      ::lseek(fd_, static_cast<off_t>(keep_bytes), SEEK_SET) < 0) {
+    throw InputError(path + ": cannot truncate to its last complete row: " + std::strerror(errno));
+  }
+  if (keep_bytes == 0) Append(layout.Header() + "\n");
+}
+
+HistoryAppender::~HistoryAppender() {
+  if (fd_ >= 0) ::close(fd_);
+}
+
+void HistoryAppender::WriteAll(const std::string& text) {
+  std::size_t done = 0;
+  while (done < text.size()) {
+    const ssize_t n = ::write(fd_, text.data() + done, text.size() - done);
+    if (n < 0) {
+      if (errno == EINTR) continue;
+      throw InputError(path_ + ": write failed: " + std::strerror(errno));
+    }
+    done += static_cast<std::size_t>(n);
+  }
+}
+
+void HistoryAppender::Append(const std::string& line) {
+  WriteAll(line);
+  if (::fsync(fd_) != 0) throw InputError(path_ + ": fsync failed: " + std::strerror(errno));
+}
+
+}  // namespace hullopt::io

@@ -1,0 +1,41 @@
+#include "optimizer/evaluator.h"
+
+#include <cmath>
+#include <stdexcept>
+
+namespace hullopt::opt {
+
+EvalResult EvaluateSafely(Evaluator& evaluator, const std::vector<double>& x) {
+  EvalResult r;
+  try {
+    r = evaluator.Evaluate(x);
+  } catch (const std::domain_error& e) {
+    r = EvalResult{};
+    r.produced = false;
+    r.error = e.what();
+    return r;
+  }
+  if (!r.produced) {
+    if (r.error.empty()) r.error = "design refused by the evaluator";
+    r.sea_values.clear();
+    r.quantities.clear();
+    return r;
+  }
+  if (!std::isfinite(r.objective)) {
+    r.produced = false;
+    r.error = "objective is not a finite number";
+    r.sea_values.clear();
+    r.quantities.clear();
+    return r;
+  }
+  if (r.sea_values.size() != evaluator.SeaNames().size() ||
+      r.quantities.size() != evaluator.QuantityNames().size()) {
+    throw std::logic_error("Evaluator returned " + std::to_string(r.sea_values.size()) + " sea values and " +
+                           std::to_string(r.quantities.size()) + " quantities, but declares " +
+                           std::to_string(evaluator.SeaNames().size()) + " and " +
+                           std::to_string(evaluator.QuantityNames().size()));
+  }
+  return r;
+}
+
+}  // namespace hullopt::opt
