@@ -4,8 +4,16 @@
 
 #include "seakeeping/periodic_motion_solver.h"
 #include "seakeeping/strip_force_model.h"
+#include "seakeeping/strip_kernel_builder.h"
 
 namespace hullopt::sk {
+
+StripKernelBuilder TransientGreenKernelBuilder() {
+  return [](StripKernel* k) {
+    StripKernel built = BuildStripKernel(k->panels, k->x_m, k->dt_s, k->rho_kg_m3, k->g_m_s2);
+    k->force = std::move(built.force);
+  };
+}
 
 bool RaoSolverOptions::IsValid(std::string* error) const {
   StripGeometryOptions g;

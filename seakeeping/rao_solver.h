@@ -18,6 +18,10 @@ namespace hullopt::sk {
 /// Fills the force rows of a kernel whose geometry is set (StripKernelGeometry).
 using StripKernelBuilder = std::function<void(StripKernel*)>;
 
+/// The paper's kernel: transient free-surface Green function strip operators reduced to force rows
+/// (BuildStripKernel of strip_kernel_builder.h) on the kernel's panels, dt, ρ and g.
+StripKernelBuilder TransientGreenKernelBuilder();
+
 struct RaoSolverOptions {
   enum class Path { kPeriodic, kTimeMarching };
   int sections = 40;        ///< strip steps along the hull (paper 40)
