@@ -87,9 +87,10 @@ bool Newton(const Maker& make, const Residual& res, double k, double* xi, double
 }
 
 // Solves for the curve. Without a usable warm start, tries the run/entrance ratios in turn: the first that
-// solves (evenest exponents) if there is no score, else the solution with the lowest score.
+// solves (evenest exponents) if there is no score, else the first with a score <= good_enough or else the
+// one with the lowest score.
 bool Solve(const Maker& make, const Residual& res, const FormCurve* warm, const CurveScore* score,
-           FormCurve* out) {
+           double good_enough, FormCurve* out) {
   const bool lowest_peak = score != nullptr;
   if (warm) {
     double xi = warm->xi_peak, lq = std::log(warm->exponent);
@@ -123,6 +124,7 @@ bool Solve(const Maker& make, const Residual& res, const FormCurve* warm, const 
         best_score = sc;
       }
       found = true;
+      if (sc <= good_enough) return true;  // evenest curve that is comfortably feasible
     }
   }
   return found;
@@ -165,13 +167,13 @@ FormCurve SolveFormCurveWithPeak(double peak, double end_value, double area, dou
     return true;
   };
   FormCurve c;
-  if (!Solve(make, Targets(area, centroid), warm_start, nullptr, &c))
+  if (!Solve(make, Targets(area, centroid), warm_start, nullptr, 0.0, &c))
     Refuse(what, area, centroid, centroid < 0.5 ? "; a wider transom (transom_beam_ratio) moves it aft" : "");
   return c;
 }
 
 FormCurve SolveFormCurveAtMidship(double end_value, double area, double centroid, const std::string& what,
-                                  const FormCurve* warm_start, const CurveScore& score) {
+                                  const FormCurve* warm_start, const CurveScore& score, double good_enough) {
   // For given (ξ_m, exponents) the peak M follows from f(0.5) = 1: forward of the peak f(0.5) = M(1-u^q);
   // aft of it M - (M - f0) v^p = 1.
   const Maker make = [=](double xi, double lq, double k, FormCurve* t) {
@@ -192,7 +194,7 @@ FormCurve SolveFormCurveAtMidship(double end_value, double area, double centroid
   };
   FormCurve c;
   const CurveScore by_peak = [](const FormCurve& f) { return f.peak; };
-  if (!Solve(make, Targets(area, centroid), warm_start, score ? &score : &by_peak, &c))
+  if (!Solve(make, Targets(area, centroid), warm_start, score ? &score : &by_peak, good_enough, &c))
     Refuse(what, area, centroid, centroid < 0.5 ? "; a deeper transom (transom_immersion) moves it aft" : "");
   return c;
 }
