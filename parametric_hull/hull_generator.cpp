@@ -21,10 +21,6 @@ constexpr int kRetargetPasses = 6;
 constexpr double kRetargetTol = 1e-6;
 // Relative area tolerance of the SWATH bulb solves (round-off level: the areas are the hydrostatics' own).
 constexpr double kAreaTol = 1e-13;
-// Area curves are accepted at once (evenest exponents) when their fullest full-draught section has an area
-// coefficient below this (families reach 0.98-1), and for a SWATH when the area peaks at most this far above
-// midships (the bulb can grow only in height there).
-constexpr double kGoodSectionFullness = 0.9, kGoodSwathPeak = 1.0;
 // Bow flare: the deck edge half-breadth above a station gains this fraction of (B/2 - b/2).
 constexpr double kFlare = 0.3;
 // Trihull outrigger form (fixed; the outriggers' size and position are design variables).
@@ -120,7 +116,7 @@ Demihull BuildBody(const BodySpec& b, CurveCache* cache) {
   const FormCurve sac = SolveFormCurveAtMidship(
       transom_ratio, b.Cp, 0.5 + b.LCB / 100.0,
       b.name + " sectional area curve (Cp = " + Num(b.Cp) + ", LCB_pct_L = " + Num(b.LCB) + ")",
-      cache->valid ? &cache->sac : nullptr, sac_score, swath ? kGoodSwathPeak : kGoodSectionFullness);
+      cache->valid ? &cache->sac : nullptr, sac_score);
   cache->wp = wp;
   cache->sac = sac;
   cache->valid = true;
