@@ -222,3 +222,31 @@ TEST_CASE("free decay of a floating circular cylinder released from a heave offs
   CHECK(period_second == Approx(period_pred).epsilon(kTolPeriod));
   CHECK(logdec_second == Approx(logdec_pred).epsilon(kTolLogDecrement));
 }
+
+TEST_CASE("heave damping equals the radiated wave energy flux", "[td][verification]") {
+  // Energy balance (issue 3, "what it must show" 2): b33 from the force (momentum route) against
+  // ρg²(|A+|² + |A−|²)/(2ω) from the far-field wave amplitudes of the same steady-state sources. The two use
+  // different parts of the solution (near-field potential on the body vs the sources' wave-number transform),
+  // so they agree only to the O(1/N) error of flat constant panels (docs/theory.md): measured ratios 0.967,
+  // 0.951 (14 panels) and 0.982, 0.973 (28 panels) at ω²R/g = 0.25, 1; halving with each doubling of N, the
+  // issue's 2% needs ~56 panels. Halving the time step changes them by < 1e−3. Tolerance 6% at 14 panels.
+  // Frequencies avoid the irregular band around ω²R/g ≈ 1.8 (at 1.4 the ratio is already 0.91;
+  // docs/theory.md).
+  constexpr double kTolEnergy = 0.06;
+  const double R = 1.0;
+  const auto panels = PanelSymmetricSection(SemicircleContour(R), 14);
+  const std::vector<double> nondim = {0.25, 0.5, 0.75, 1.0, 2.5};
+  const double w_max = std::sqrt(nondim.back() * kG / R);
+  const double dt = 2 * M_PI / w_max / 40;
+  const int lags = static_cast<int>(20.0 / dt);  // 20 s ≈ 64 sqrt(R/g): near-surface memory decayed by e^{−6}
+  const auto ops = BuildFixedSectionOperators(panels, lags + 1, dt, kRho, kG);
+  for (double k : nondim) {
+    const double w = std::sqrt(k * kG / R);
+    const double b33 = w * SteadyHeaveMomentum(ops, w, lags).imag();
+    const auto A = FarFieldWaveAmplitudes(panels, SteadyHeaveSources(ops, w, lags), w, kG);
+    const double b_energy = kRho * kG * kG * (A[0] * A[0] + A[1] * A[1]) / (2 * w);
+    WARN("w^2R/g = " << k << ": b33 = " << b33 << " kg/(m s), energy flux " << b_energy << ", ratio "
+                     << b33 / b_energy);
+    CHECK(b33 == Approx(b_energy).epsilon(kTolEnergy));
+  }
+}
