@@ -143,6 +143,8 @@ HeaveCoefficients TimeDomainHeaveCoefficients(const std::vector<Panel>& panels,
     out.omega_rad_s.push_back(w);
     out.a33_kg_per_m.push_back(-I.real());
     out.b33_kg_per_m_s.push_back(w * I.imag());
+    const auto A = FarFieldWaveAmplitudes(panels, SteadyHeaveSources(ops, w, lags), w, g);
+    out.b33_energy_kg_per_m_s.push_back(rho * g * g * (A[0] * A[0] + A[1] * A[1]) / (2 * w));
   }
   return out;
 }

@@ -34,6 +34,9 @@ struct HeaveCoefficients {
   std::vector<double> omega_rad_s;
   std::vector<double> a33_kg_per_m;
   std::vector<double> b33_kg_per_m_s;
+  /// Damping from the far-field radiated wave energy flux of the same solution, ρg²(|A+|² + |A−|²)/(2ω): an
+  /// energy-balance check of b33 (agrees to the O(1/N) panel error).
+  std::vector<double> b33_energy_kg_per_m_s;
   double a33_infinite_kg_per_m = 0.0;  ///< impulsive (t = 0+) added mass: the ω → ∞ limit
   double dt_s = 0.0;                   ///< time step used
   int lags = 0;                        ///< lag horizon used (steps)

@@ -96,6 +96,25 @@ TEST_CASE("strip kernel reproduces the marching solver for changing sections and
   }
 }
 
+TEST_CASE("a strip may hold no section at some steps (before the bow, after the stern)", "[td][kernel]") {
+  constexpr double kTolKernel = 1e-9;  // round-off only
+  auto panels = ChangingStrip(4);
+  panels.insert(panels.begin(), std::vector<Panel>{});
+  panels.push_back({});
+  const auto ops = BuildStripOperators(panels, 0.05, kRho, kG);
+  const StripKernel K = BuildStripKernel(ops, {5, 4, 3, 2, 1, 0});
+  StripMarcher marcher(ops);
+  std::vector<Eigen::VectorXd> V;
+  for (std::size_t n = 0; n < panels.size(); ++n) {
+    V.push_back(HeaveNormals(panels[n], 0.3 + 0.1 * n));
+    const double f_march = marcher.Advance(V.back());
+    double f_kernel = 0;
+    for (std::size_t m = 0; m <= n; ++m) f_kernel += K.force[n][m].dot(V[m]);
+    CHECK(std::isfinite(f_march));
+    CHECK(f_kernel == Approx(f_march).epsilon(kTolKernel).margin(kTolKernel * 1e4));
+  }
+}
+
 TEST_CASE("time-invariant operators equal the general operators of an unchanging section", "[td]") {
   constexpr double kTolSame = 1e-12;  // identical formulas, different bookkeeping
   const auto panels = PanelSymmetricSection(SemicircleContour(0.7), 10);
