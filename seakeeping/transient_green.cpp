@@ -59,11 +59,15 @@ struct Arg {
   cd a, sqrt_a, x;
 };
 Arg MakeArg(double Yabs, double Z, double t, double g) {
-  Arg r;
-  r.a = cd(-Z, -Yabs);
-  r.sqrt_a = std::sqrt(r.a);
-  r.x = std::sqrt(g) * t / (2.0 * r.sqrt_a);
-  return r;
+  // Hot path: principal sqrt of a = |Z| − i|Y| and x = √g t / (2√a) with real arithmetic only
+  // (√a = (sqrt((r + |Z|)/2), −sqrt((r − |Z|)/2)), r = |a| = |√a|²; 1/√a = conj(√a)/r).
+  Arg out;
+  const double p = -Z, r = std::sqrt(p * p + Yabs * Yabs);
+  out.a = cd(p, -Yabs);
+  out.sqrt_a = cd(std::sqrt(0.5 * (r + p)), -std::sqrt(0.5 * std::fmax(r - p, 0.0)));
+  const double scale = std::sqrt(g) * t / (2.0 * r);
+  out.x = cd(scale * out.sqrt_a.real(), -scale * out.sqrt_a.imag());
+  return out;
 }
 
 cd ConjIf(bool c, cd v) { return c ? std::conj(v) : v; }
