@@ -132,7 +132,8 @@ HeaveCoefficients TimeDomainHeaveCoefficients(const std::vector<Panel>& panels,
   // of it.
   horizon = std::max(horizon, 40.0 * std::sqrt(r_max / g));
   const int lags = std::min(options.max_lags, static_cast<int>(std::ceil(horizon / dt)));
-  const StripOperators ops = BuildFixedSectionOperators(panels, lags + 1, dt, rho, g, options.operators);
+  const StripOperators ops =
+      BuildFixedSectionOperators(panels, lags + 1, dt, rho, g, options.operators, /*steady_state_only=*/true);
   HeaveCoefficients out;
   out.dt_s = dt;
   out.lags = lags;

@@ -52,3 +52,11 @@ TEST_CASE("marcher refuses a wrong velocity size and steps past the end", "[td][
   m.Advance(Eigen::VectorXd::Ones(6));
   CHECK_THROWS_AS(m.Advance(Eigen::VectorXd::Ones(6)), std::out_of_range);
 }
+
+TEST_CASE("steady-state-only operators refuse time marching from rest", "[td][input]") {
+  const auto good = PanelSymmetricSection(SemicircleContour(1.0), 6);
+  const auto ops = BuildFixedSectionOperators(good, 3, 0.05, 1025, 9.81, {}, /*steady_state_only=*/true);
+  CHECK_NOTHROW(ops.LagMemory(2));
+  StripMarcher m(ops);
+  CHECK_THROWS_AS(m.Advance(Eigen::VectorXd::Ones(6)), std::logic_error);
+}
