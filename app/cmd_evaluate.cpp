@@ -1,7 +1,13 @@
 // `hullopt evaluate CONFIG --out DIR`: rms accelerations and motion sickness incidence of one or more designs
 // in a list of head seas; writes msi.csv, summary.json and the seakeeping plots.
 //
-// Until the ship-motion solver is wired in, the RAOs come from rao.csv files (the `hullopt rao` output):
+// RAOs are computed by the time-domain strip solver from a design config (hull, speed, solver, mass), or read
+// from rao.csv files (the `hullopt rao` output):
+//
+//   hull: {...}; speed: {...}; solver: {Cs: ...}; mass: {...}   # one design computed here ...
+//
+//   designs:                                 # ... or several, each a design config file
+//     - { config: configs/davis-holloway-2003/hull04_DUT372.yaml, name: DUT372, group: catamaran, Cs: 0.024 }
 //
 //   rao_csv: out/rao/rao.csv                 # one design ...
 //   name: delft372                           # optional, default: the file's parent folder or stem
@@ -15,7 +21,6 @@
 //   water: { g_m_s2: 9.81 }                  # optional
 //   seas: [...]; msi: {...}; positions: { points: [...] }   (io/seas_config.h)
 //   report: { plots: true }
-// Keys of the full tool (hull, mass, solver) are accepted and left to the solver path.
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -24,6 +29,7 @@
 #include <stdexcept>
 
 #include "app/commands.h"
+#include "app/design_case.h"
 #include "app/output_dir.h"
 #include "io/evaluation_report.h"
 #include "io/input_error.h"
@@ -58,8 +64,34 @@ struct DesignInput {
   std::string where;  // config location for messages
 };
 
+// A design computed by the strip solver from its own config (root = that config's map).
+void ComputeDesign(io::YamlMap& root, const std::string& file, DesignInput* in, double cs_override) {
+  const DesignCase dc = LoadDesignCase(root, file, in->design.name);
+  root.Finish();
+  in->design.rao = ComputeDesignRaos(dc, EvaluationFrequencies(), cs_override);
+  in->design.hull = dc.Extent();
+  for (const auto& [k, v] : dc.Parameters()) in->design.parameters.emplace(k, v);
+}
+
 DesignInput ReadDesign(io::YamlMap& m, const std::string& config_file, double g, bool single) {
   DesignInput in;
+  if (!single && m.Has("config")) {
+    in.where = m.Where("config");
+    const std::string file = DataPath(m.String("config"), config_file);
+    m.resolved()["config"] = std::filesystem::absolute(file).lexically_normal().string();
+    in.design.name = m.String("name", std::filesystem::path(file).stem().string());
+    in.design.group = m.String("group", "");
+    const double cs = m.Has("Cs") ? m.Number("Cs") : -1.0;
+    if (m.Has("Cs") && cs < 0) m.Fail("Cs", "must be >= 0");
+    io::YamlMap params = m.MapOrEmpty("parameters");
+    for (const auto& key : params.Keys()) in.design.parameters[key] = params.Number(key);
+    params.Finish();
+    io::YamlMap design_root = io::YamlMap::LoadFile(file);
+    ComputeDesign(design_root, file, &in, cs);
+    if (std::abs(g - design_root.resolved()["water"]["g_m_s2"].as<double>(g)) > 1e-9)
+      throw io::InputError(in.where + ": the design's g differs from the evaluation's water.g_m_s2");
+    return in;
+  }
   in.where = m.Where("rao_csv");
   const std::string csv = DataPath(m.String("rao_csv"), config_file);
   // Record the file actually read, absolute, so config.resolved.yaml re-runs from any folder.
@@ -99,24 +131,33 @@ double ReadSpeedCheck(io::YamlMap& root) {
 void Run(const std::string& config_file, const std::string& out_dir) {
   const auto t0 = std::chrono::steady_clock::now();
   io::YamlMap root = io::YamlMap::LoadFile(config_file);
-  io::YamlMap water = root.MapOrEmpty("water");
-  const double g = water.Number("g_m_s2", 9.81);
-  if (water.Has("rho_kg_m3")) water.Number("rho_kg_m3");
-  if (!(g > 5.0 && g < 15.0)) water.Fail("g_m_s2", "must be within 5..15 m/s²");
-  water.Finish();
-  const double speed_check = ReadSpeedCheck(root);
+  double g = 9.81;
+  if (!root.Has("hull")) {  // with a hull, water is read with the design
+    io::YamlMap water = root.MapOrEmpty("water");
+    g = water.Number("g_m_s2", 9.81);
+    if (water.Has("rho_kg_m3")) water.Number("rho_kg_m3");
+    if (!(g > 5.0 && g < 15.0)) water.Fail("g_m_s2", "must be within 5..15 m/s²");
+    water.Finish();
+  }
+  const double speed_check = root.Has("hull") ? NAN : ReadSpeedCheck(root);
 
-  const bool single = root.Has("rao_csv"), multi = root.Has("designs");
-  if (single == multi)
-    throw io::InputError(
-        config_file +
-        ": give either 'rao_csv' (one design) or 'designs' (a list); evaluate reads RAOs from "
-        "rao.csv files until the ship-motion solver is wired in");
-  for (const char* key : {"hull", "mass", "solver"})
-    if (root.Has(key)) root.Skip(key);
+  const bool single = root.Has("rao_csv"), multi = root.Has("designs"), computed = root.Has("hull");
+  if ((single ? 1 : 0) + (multi ? 1 : 0) + (computed ? 1 : 0) != 1)
+    throw io::InputError(config_file +
+                         ": give exactly one of 'hull' (one design computed by the strip solver), 'rao_csv' "
+                         "(one design's RAOs from a file) or 'designs' (a list)");
 
   std::vector<DesignInput> inputs;
-  if (single) {
+  if (computed) {
+    DesignInput in;
+    in.where = root.Where("hull");
+    in.design.name = std::filesystem::path(config_file).stem().string();
+    const DesignCase dc = LoadDesignCase(root, config_file, in.design.name);
+    in.design.rao = ComputeDesignRaos(dc, EvaluationFrequencies());
+    in.design.hull = dc.Extent();
+    in.design.parameters = dc.Parameters();
+    inputs.push_back(in);
+  } else if (single) {
     inputs.push_back(ReadDesign(root, config_file, g, true));
   } else {
     for (io::YamlMap& d : root.ListOfMaps("designs")) {

@@ -1,5 +1,6 @@
 #include "app/evaluator_factory.h"
 
+#include "app/msi_evaluator.h"
 #include "io/input_error.h"
 #include "optimizer/analytic_objectives.h"
 
@@ -8,11 +9,7 @@ namespace hullopt::app {
 std::unique_ptr<opt::Evaluator> MakeEvaluator(io::YamlMap& root, io::YamlMap& block,
                                               const opt::CampaignDefinition& campaign) {
   io::YamlMap objective = block.MapOrEmpty("objective");
-  if (!objective.Has("analytic")) {
-    throw io::InputError(block.Where("objective") +
-                         ": the MSI objective is not available in this version yet; for a test or demo "
-                         "campaign use objective: { analytic: sphere|rosenbrock|rastrigin|linear }");
-  }
+  if (!objective.Has("analytic")) return MakeMsiEvaluator(root, objective, campaign);
   opt::AnalyticObjectiveOptions o;
   o.function = objective.Choice("analytic", opt::AnalyticFunctionNames());
   o.dimension = static_cast<int>(campaign.variables.size());

@@ -510,6 +510,11 @@ CsCalibrationResult CalibrateCs(const CsRaoModel& model, const std::vector<Calib
       pk.measured = InterpolatedPeak(xs, ym);
       pk.before = InterpolatedPeak(xs, yb);
       pk.after = InterpolatedPeak(xs, ya);
+      if (!(pk.measured.value > 0)) {  // no relative peak error against an all-zero measurement
+        res.warnings.push_back("case '" + cc.label + "': every measured " + pk.quantity +
+                               " RAO is 0, no peak comparison");
+        continue;
+      }
       res.peaks.push_back(pk);
     }
   }

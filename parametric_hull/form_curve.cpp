@@ -43,14 +43,15 @@ constexpr double kRunRatios[] = {1.0,     1.5,  1 / 1.5,  2.25, 1 / 2.25, 3.4,  
 // targets; the hydrostatic re-targeting then removes the discretisation error.
 constexpr double kSolveTol = 1e-11;
 
-using Residual = std::function<bool(const FormCurve&, Eigen::Vector2d*)>;
-using Maker = std::function<bool(double xi, double logq, double k, FormCurve*)>;
-
+// Maker: bool(double xi, double log q, double k, FormCurve*); Residual: bool(const FormCurve&, Vector2d*).
+// Templates rather than std::function: the grid search below evaluates them tens of thousands of times.
+template <class Maker, class Residual>
 bool Eval(const Maker& make, const Residual& res, double xi, double lq, double k, Eigen::Vector2d* r) {
   FormCurve c;
   return make(xi, lq, k, &c) && res(c, r);
 }
 
+template <class Maker, class Residual>
 bool Newton(const Maker& make, const Residual& res, double k, double* xi, double* lq) {
   Eigen::Vector2d r, r1;
   for (int it = 0; it < 50; ++it) {
@@ -87,9 +88,11 @@ bool Newton(const Maker& make, const Residual& res, double k, double* xi, double
 }
 
 // Solves for the curve. Without a usable warm start, tries the run/entrance ratios in turn: the first that
-// solves (evenest exponents) if there is no score, else the solution with the lowest score.
+// solves (evenest exponents) if there is no score, else the first with a score <= good_enough or else the
+// one with the lowest score.
+template <class Maker, class Residual>
 bool Solve(const Maker& make, const Residual& res, const FormCurve* warm, const CurveScore* score,
-           FormCurve* out) {
+           double good_enough, FormCurve* out) {
   const bool lowest_peak = score != nullptr;
   if (warm) {
     double xi = warm->xi_peak, lq = std::log(warm->exponent);
@@ -123,6 +126,7 @@ bool Solve(const Maker& make, const Residual& res, const FormCurve* warm, const 
         best_score = sc;
       }
       found = true;
+      if (sc <= good_enough) return true;  // evenest curve that is comfortably feasible
     }
   }
   return found;
@@ -137,7 +141,7 @@ bool Solve(const Maker& make, const Residual& res, const FormCurve* warm, const 
   throw std::domain_error(s.str());
 }
 
-Residual Targets(double area, double centroid) {
+auto Targets(double area, double centroid) {
   return [=](const FormCurve& c, Eigen::Vector2d* r) {
     const double a = c.Area();
     (*r)(0) = (a - area) / area;
@@ -156,7 +160,7 @@ FormCurve SolveFormCurveWithPeak(double peak, double end_value, double area, dou
   if (!(area < peak))
     throw std::domain_error(what + ": area " + std::to_string(area) + " must be below the peak " +
                             std::to_string(peak));
-  const Maker make = [=](double xi, double lq, double k, FormCurve* c) {
+  const auto make = [=](double xi, double lq, double k, FormCurve* c) {
     c->xi_peak = xi;
     c->exponent = std::exp(lq);
     c->run_ratio = k;
@@ -165,16 +169,16 @@ FormCurve SolveFormCurveWithPeak(double peak, double end_value, double area, dou
     return true;
   };
   FormCurve c;
-  if (!Solve(make, Targets(area, centroid), warm_start, nullptr, &c))
+  if (!Solve(make, Targets(area, centroid), warm_start, nullptr, 0.0, &c))
     Refuse(what, area, centroid, centroid < 0.5 ? "; a wider transom (transom_beam_ratio) moves it aft" : "");
   return c;
 }
 
 FormCurve SolveFormCurveAtMidship(double end_value, double area, double centroid, const std::string& what,
-                                  const FormCurve* warm_start, const CurveScore& score) {
+                                  const FormCurve* warm_start, const CurveScore& score, double good_enough) {
   // For given (ξ_m, exponents) the peak M follows from f(0.5) = 1: forward of the peak f(0.5) = M(1-u^q);
   // aft of it M - (M - f0) v^p = 1.
-  const Maker make = [=](double xi, double lq, double k, FormCurve* t) {
+  const auto make = [=](double xi, double lq, double k, FormCurve* t) {
     t->xi_peak = xi;
     t->exponent = std::exp(lq);
     t->run_ratio = k;
@@ -192,7 +196,7 @@ FormCurve SolveFormCurveAtMidship(double end_value, double area, double centroid
   };
   FormCurve c;
   const CurveScore by_peak = [](const FormCurve& f) { return f.peak; };
-  if (!Solve(make, Targets(area, centroid), warm_start, score ? &score : &by_peak, &c))
+  if (!Solve(make, Targets(area, centroid), warm_start, score ? &score : &by_peak, good_enough, &c))
     Refuse(what, area, centroid, centroid < 0.5 ? "; a deeper transom (transom_immersion) moves it aft" : "");
   return c;
 }

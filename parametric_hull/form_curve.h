@@ -35,8 +35,10 @@ using CurveScore = std::function<double(const FormCurve&)>;
 
 /// Curve normalised at midships, f(0.5) = 1 (sectional area curve over the midship area: area Cp, centroid
 /// 0.5 + LCB/100, f(0) the transom area ratio). The peak may exceed 1 when the area lies far aft. Among the
-/// family members that meet the targets the one with the lowest score is taken (default: the lowest peak).
+/// family members that meet the targets (run/entrance ratios tried evenest first) the first with a score
+/// <= good_enough is taken, else the one with the lowest score (default score: the peak).
 FormCurve SolveFormCurveAtMidship(double end_value, double area, double centroid, const std::string& what,
-                                  const FormCurve* warm_start = nullptr, const CurveScore& score = nullptr);
+                                  const FormCurve* warm_start = nullptr, const CurveScore& score = nullptr,
+                                  double good_enough = 0.0);
 
 }  // namespace hullopt::hull

@@ -17,7 +17,8 @@ constexpr double kPi = 3.14159265358979323846;
 // Fixed-point passes on Cp, Cwp, LCB, LCF: each removes most of the discretisation error (it is smooth in the
 // targets); 6 passes bring it to round-off level for the Table 1 hulls.
 constexpr int kRetargetPasses = 6;
-constexpr double kRetargetTol = 1e-8;
+// Stop when |ΔCp| + |ΔCwp| + 0.01 (|ΔLCB| + |ΔLCF|) [% L] is below this: four orders below the targets.
+constexpr double kRetargetTol = 1e-6;
 // Relative area tolerance of the SWATH bulb solves (round-off level: the areas are the hydrostatics' own).
 constexpr double kAreaTol = 1e-13;
 // Bow flare: the deck edge half-breadth above a station gains this fraction of (B/2 - b/2).
@@ -76,6 +77,10 @@ struct BodySpec {
 struct CurveCache {
   bool valid = false;
   FormCurve wp, sac;
+  // Trihull outriggers do not depend on the re-targeted values: built once, with their totals.
+  bool has_body = false;
+  Demihull body;
+  double V = 0, Vx = 0, Awp = 0, Awpx = 0, Amid = 0;
 };
 
 Demihull BuildBody(const BodySpec& b, CurveCache* cache) {
@@ -287,11 +292,26 @@ HullForm Build(const DesignVariables& dv, double L, double Cm, const Targets& tg
   o.LCF = kOutriggerLcf;
   o.transom_immersion = kOutriggerTransom;
   o.transom_beam = kOutriggerTransomBeam;
-  Demihull outrigger = BuildBody(o, outrigger_cache);
-  outrigger.role = "outrigger";
-  outrigger.y_centre_m = dv.outrigger_offset_over_L * L;
-  const double x_mid = 0.5 * L;
-  const BodyTotals ot = Totals(outrigger, T, x_mid);  // built on the ship's waterline z = T, keel at T - T_o
+  if (!outrigger_cache->has_body) {
+    outrigger_cache->body = BuildBody(o, outrigger_cache);
+    outrigger_cache->body.role = "outrigger";
+    outrigger_cache->body.y_centre_m = dv.outrigger_offset_over_L * L;
+    // Built on the ship's waterline z = T, keel at T - T_o.
+    const BodyTotals t = Totals(outrigger_cache->body, T, 0.5 * L);
+    outrigger_cache->V = t.V;
+    outrigger_cache->Vx = t.Vx;
+    outrigger_cache->Awp = t.Awp;
+    outrigger_cache->Awpx = t.Awpx;
+    outrigger_cache->Amid = t.Amid;
+    outrigger_cache->has_body = true;
+  }
+  const Demihull& outrigger = outrigger_cache->body;
+  BodyTotals ot;
+  ot.V = outrigger_cache->V;
+  ot.Vx = outrigger_cache->Vx;
+  ot.Awp = outrigger_cache->Awp;
+  ot.Awpx = outrigger_cache->Awpx;
+  ot.Amid = outrigger_cache->Amid;
   const double Vt = tg.Cp * Cm * L * B * T, Amt = Cm * B * T, Awpt = tg.Cwp * L * B;
   const double Vm = Vt - 2 * ot.V, Amm = Amt - 2 * ot.Amid, Awpm = Awpt - 2 * ot.Awp;
   if (!(Vm > 0 && Amm > 0 && Awpm > 0))

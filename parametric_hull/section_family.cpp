@@ -154,23 +154,29 @@ Station SwathSection(const SectionTarget& t, double e, double h, double nb) {
   const double st = t.half_beam_m;
   const double ew = std::max(e, st);  // a bulb narrower than the strut is widened to the strut
   const int m = std::max(4, t.points / 2);
+  // Powers of the superellipse; the default elliptic bulb (nb = 2) needs none (this is the hot loop of SWATH
+  // generation).
+  const bool ellipse = nb == 2.0;
+  const auto pw = [&](double v, double ex) { return ellipse && ex == 1.0 ? v : std::pow(v, ex); };
   // Lower half of the bulb: superellipse quadrant from the keel to the widest point.
   for (int j = 0; j < m; ++j) {
     const double th = 0.5 * kPi * j / (m - 1);
     const double sn = j == m - 1 ? 1.0 : std::sin(th), cs = j == m - 1 ? 0.0 : std::cos(th);
-    s.y_m.push_back(ew * std::pow(sn, 2.0 / nb));
-    s.z_m.push_back(keel + 0.5 * h * (1.0 - std::pow(cs, 2.0 / nb)));
+    s.y_m.push_back(ew * pw(sn, 2.0 / nb));
+    s.z_m.push_back(keel + 0.5 * h * (1.0 - pw(cs, 2.0 / nb)));
   }
   // Upper half of the bulb back in to the strut: y = ew (1 - w^nb)^(1/nb), w = (z - zc)/(h/2) from 0 to w_j.
   const double zc = keel + 0.5 * h;
   if (ew > st) {
-    const double wj = std::pow(1.0 - std::pow(st / ew, nb), 1.0 / nb);
+    const double wj =
+        ellipse ? std::sqrt(1.0 - (st / ew) * (st / ew)) : std::pow(1.0 - std::pow(st / ew, nb), 1.0 / nb);
     for (int j = 1; j < m; ++j) {
       const double th = 0.5 * kPi * j / (m - 1);
       // Parametrise by angle for even spacing, clipped at w_j.
-      double w = std::pow(std::sin(th), 2.0 / nb);
+      double w = pw(std::sin(th), 2.0 / nb);
       if (w >= wj || j == m - 1) w = wj;
-      const double y = ew * std::pow(std::max(0.0, 1.0 - std::pow(w, nb)), 1.0 / nb);
+      const double y = ellipse ? ew * std::sqrt(std::max(0.0, 1.0 - w * w))
+                               : ew * std::pow(std::max(0.0, 1.0 - std::pow(w, nb)), 1.0 / nb);
       s.y_m.push_back(std::max(st, y));
       s.z_m.push_back(zc + 0.5 * h * w);
       if (w == wj) break;

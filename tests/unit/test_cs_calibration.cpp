@@ -389,3 +389,13 @@ TEST_CASE("a model that throws during the fit: reported, never escaping Ceres un
   CHECK_THROWS_WITH(CalibrateCs(picky, {MakeCase("A", kHeave, kPitch)}, o),
                     Catch::Contains("case 'A'") && Catch::Contains("no solution below 0.08"));
 }
+
+TEST_CASE("an all-zero measured quantity gives no peak comparison (no division by zero)", "[calibration]") {
+  CsCalibrationOptions o;
+  o.pitch_weight = 0;
+  const auto r = CalibrateCs(Model1(), {MakeCase("A", kHeave, {0, 0, 0, 0})}, o);
+  REQUIRE(r.peaks.size() == 1);
+  CHECK(r.peaks[0].quantity == "heave");
+  REQUIRE_FALSE(r.warnings.empty());
+  CHECK(r.warnings.back().find("every measured pitch RAO is 0") != std::string::npos);
+}

@@ -1,0 +1,124 @@
+#include "app/design_case.h"
+
+#include <cmath>
+#include <stdexcept>
+
+#include "io/input_error.h"
+#include "io/speed_config.h"
+#include "seakeeping/head_sea_ship_model.h"
+#include "seakeeping/periodic_motion_solver.h"
+
+namespace hullopt::app {
+namespace {
+
+sk::RaoSolverOptions SolverOptions(const DesignCase& d, double cs) {
+  sk::RaoSolverOptions o;
+  o.sections = d.solver.sections;
+  o.panels = d.solver.panels;
+  o.interaction = d.solver.interaction;
+  o.path = d.solver.path == "periodic" ? sk::RaoSolverOptions::Path::kPeriodic
+                                       : sk::RaoSolverOptions::Path::kTimeMarching;
+  o.motion.damping_cs = cs;
+  o.motion.hull_name = d.name;
+  o.marching.hydrodynamic_fraction = d.solver.hydrodynamic_fraction;
+  return o;
+}
+
+template <class F>
+auto Guard(const DesignCase& d, F&& f) -> decltype(f()) {
+  try {
+    return f();
+  } catch (const std::domain_error& e) {
+    throw io::InputError("design '" + d.name + "': cannot compute RAOs: " + e.what());
+  } catch (const std::invalid_argument& e) {
+    throw io::InputError("design '" + d.name + "': cannot compute RAOs: " + e.what());
+  }
+}
+
+}  // namespace
+
+sk::HullExtent DesignCase::Extent() const {
+  const double x_aft = hydrostatics.x_ap_m;
+  const double x_fwd = hydrostatics.x_ap_m + hydrostatics.L_m;
+  return {mass.lcg_m_from_ap - x_aft, x_fwd - mass.lcg_m_from_ap};
+}
+
+std::map<std::string, double> DesignCase::Parameters() const {
+  const auto& h = hydrostatics;
+  return {{"Fr", speed_m_s / std::sqrt(water.g_m_s2 * h.L_m)},
+          {"Cvp", h.Cvp},
+          {"B_over_T", h.B_m / h.T_m},
+          {"L_over_B", h.L_m / h.B_m},
+          {"L_m", h.L_m}};
+}
+
+DesignCase LoadDesignCase(io::YamlMap& root, const std::string& config_file, const std::string& name) {
+  DesignCase d;
+  d.name = name;
+  d.water = io::ParseWater(root);
+  const io::HullOptions hull_opts = io::ParseHullConfig(root, d.water);
+  const io::SpeedOptions speed = io::ParseSpeed(root, true);
+  d.hull = io::LoadHull(hull_opts, config_file);
+  if (root.Has("solver")) {
+    io::YamlMap s = root.Map("solver");
+    d.has_frequencies = s.Has("frequencies");
+    if (s.Has("kernel")) s.Choice("kernel", {"transient_green"}, "transient_green");
+    if (d.has_frequencies) {
+      d.solver = io::ParseSolverConfig(s);
+    } else {
+      // ParseSolverConfig requires a frequency list; a design evaluated in seas takes the sea grid instead.
+      io::SolverConfig c;
+      c.method = s.Choice("method", {"time_domain_strip"}, c.method);
+      c.sections = s.Integer("sections", c.sections);
+      if (c.sections < 2) s.Fail("sections", "must be >= 2 (the paper uses 40)");
+      c.panels = s.Integer("panels", c.panels);
+      if (c.panels < 4 || c.panels % 2 != 0) s.Fail("panels", "must be even and >= 4 (the paper uses 14)");
+      c.cs = s.Number("Cs", c.cs);
+      if (c.cs < 0.0) s.Fail("Cs", "must be >= 0 (the paper's values are 0 to 0.15)");
+      c.interaction = s.Boolean("interaction", c.interaction);
+      s.Finish();
+      d.solver = c;
+    }
+  }
+  try {
+    d.hydrostatics = hull::ComputeHydrostatics(d.hull, d.water.rho_kg_m3);
+  } catch (const std::exception& e) {
+    throw io::InputError(config_file + ": design '" + name + "': " + e.what());
+  }
+  io::YamlMap mass_map = root.MapOrEmpty("mass");
+  d.mass = io::ParseMassConfig(mass_map, d.hydrostatics);
+  d.speed_m_s = speed.MetresPerSecond(d.hydrostatics.L_m, d.water.g_m_s2);
+  return d;
+}
+
+sk::StripKernel BuildDesignKernel(const DesignCase& d) {
+  return Guard(d, [&] {
+    return sk::BuildHullStripKernel(d.hull, SolverOptions(d, d.solver.cs), d.speed_m_s, d.water.rho_kg_m3,
+                                    d.water.g_m_s2, sk::TransientGreenKernelBuilder());
+  });
+}
+
+sk::RaoTable DesignRaosFromKernel(const DesignCase& d, const sk::StripKernel& kernel,
+                                  const std::vector<double>& omega_rad_s, double cs) {
+  return Guard(d, [&] {
+    const sk::HeadSeaShipModel model(kernel, d.mass, SolverOptions(d, cs).motion);
+    return sk::SolvePeriodicRaos(model, omega_rad_s);
+  });
+}
+
+sk::RaoTable ComputeDesignRaos(const DesignCase& d, const std::vector<double>& omega_rad_s,
+                               double cs_override) {
+  const double cs = cs_override >= 0.0 ? cs_override : d.solver.cs;
+  return Guard(d, [&] {
+    return sk::ComputeRaos(d.hull, d.mass, d.speed_m_s, d.water.rho_kg_m3, d.water.g_m_s2, omega_rad_s,
+                           SolverOptions(d, cs), sk::TransientGreenKernelBuilder());
+  });
+}
+
+std::vector<double> EvaluationFrequencies(int count) {
+  std::vector<double> w(count);
+  for (int i = 0; i < count; ++i) w[i] = 0.2 + (3.0 - 0.2) * i / (count - 1);
+  return w;
+}
+
+}  // namespace hullopt::app

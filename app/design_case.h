@@ -1,0 +1,56 @@
+#pragma once
+// One design as the commands that need RAOs see it (evaluate, optimize, calibrate): the hull, its
+// hydrostatics and mass properties, the speed and the strip-solver settings read from a config, and the call
+// that turns it into heave and pitch RAOs with the paper's time-domain strip method.
+#include <map>
+#include <string>
+#include <vector>
+
+#include "io/hull_config.h"
+#include "io/motion_config.h"
+#include "io/water_config.h"
+#include "io/yaml_map.h"
+#include "parametric_hull/hydrostatics.h"
+#include "seakeeping/passenger_positions.h"
+#include "seakeeping/rao_solver.h"
+#include "seakeeping/rao_table.h"
+
+namespace hullopt::app {
+
+struct DesignCase {
+  std::string name;
+  hull::HullForm hull;
+  hull::Hydrostatics hydrostatics;
+  hull::MassProperties mass;
+  io::WaterOptions water;
+  double speed_m_s = 0.0;      ///< [m/s]
+  io::SolverConfig solver;     ///< Cs, sections, panels, path ...
+  bool has_frequencies = false;  ///< the config gave solver.frequencies
+  /// CG-to-transom and CG-to-bow distances for the passenger positions [m].
+  sk::HullExtent Extent() const;
+  /// Fr, Cvp, B_over_T, L_over_B, L_m of the main body: axes of the study plots.
+  std::map<std::string, double> Parameters() const;
+};
+
+/// Reads water, hull, speed, solver (optional: defaults 40 sections × 14 panels, Cs 0, periodic path) and mass
+/// from root and builds the hull. Consumes exactly these keys (the caller calls root.Finish()). Errors are
+/// io::InputError naming the file, key and rule.
+DesignCase LoadDesignCase(io::YamlMap& root, const std::string& config_file, const std::string& name);
+
+/// RAOs of the design at wave frequencies omega_rad_s (increasing, > 0), with the transient Green-function
+/// strip kernel. Cs overrides the config's when >= 0. Throws io::InputError naming the design for a hull that
+/// cannot be solved or non-finite results.
+sk::RaoTable ComputeDesignRaos(const DesignCase& design, const std::vector<double>& omega_rad_s,
+                               double cs_override = -1.0);
+
+/// The strip kernel of the design (frequency- and Cs-independent; compute once, reuse for many Cs).
+sk::StripKernel BuildDesignKernel(const DesignCase& design);
+/// RAOs from a prebuilt kernel (periodic path) for a given Cs.
+sk::RaoTable DesignRaosFromKernel(const DesignCase& design, const sk::StripKernel& kernel,
+                                  const std::vector<double>& omega_rad_s, double cs);
+
+/// Wave-frequency grid for sea-state evaluation: uniform in ω over [0.2, 3.0] rad/s (wavelengths 7 m to 1.5 km),
+/// which holds all but a negligible part of the energy of JONSWAP seas with Tz 4–12 s.
+std::vector<double> EvaluationFrequencies(int count = 60);
+
+}  // namespace hullopt::app
