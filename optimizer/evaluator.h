@@ -1,7 +1,8 @@
 #pragma once
 // The abstract evaluation a campaign optimises or explores: design variables in, objective and named
 // quantities out. The campaign machinery (NLopt driver, sampling, resume, parallel runs) only sees this
-// interface; the MSI evaluator (hull generator + motions + seas) and the analytic test objectives implement it.
+// interface; the MSI evaluator (hull generator + motions + seas) and the analytic test objectives implement
+// it.
 #include <string>
 #include <vector>
 
