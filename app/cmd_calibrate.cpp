@@ -1,13 +1,121 @@
+// hullopt calibrate CONFIG --out DIR: fits the damping coefficient Cs to tank RAOs (issue 7).
+#include <glog/logging.h>
+
+#include <cctype>
+#include <cstdio>
+#include <fstream>
+#include <iostream>
+#include <stdexcept>
+
+#include "app/calibration_model.h"
 #include "app/commands.h"
+#include "app/output_dir.h"
+#include "io/calibrate_config.h"
+#include "io/calibration_output.h"
+#include "io/calibration_plot.h"
 #include "io/input_error.h"
+#include "io/tank_rao_reader.h"
 
 namespace hullopt::app {
+namespace {
 
-// Placeholder until the calibrate issue lands: registered so --help lists the whole tool.
+void Write(const std::string& path, const std::string& text) {
+  std::ofstream out(path);
+  if (!out || !(out << text)) throw io::InputError(path + ": cannot write output file");
+}
+
+/// "Fn 0.75" → "Fn0.75", "hull A Fn 0.5" → "hull_A_Fn0.5": a file-name-safe label.
+std::string FileLabel(const std::string& label) {
+  std::string s;
+  for (std::size_t i = 0; i < label.size(); ++i) {
+    const char c = label[i];
+    if (c == ' ') {
+      if (i >= 2 && label.compare(i - 2, 2, "Fn") == 0) continue;
+      s += '_';
+    } else if (std::isalnum(static_cast<unsigned char>(c)) || c == '.' || c == '-') {
+      s += c;
+    } else {
+      s += '_';
+    }
+  }
+  return s;
+}
+
+void RunCalibrate(const std::string& config_file, const std::string& out_dir) {
+  io::YamlMap root = io::YamlMap::LoadFile(config_file);
+  const io::CalibrateConfig cfg = io::ReadCalibrateConfig(root);
+
+  // Cases: hull by hull, speed by speed.
+  std::vector<opt::CalibrationCase> cases;
+  std::string files;
+  for (const auto& hull : cfg.hulls) {
+    std::vector<opt::TankRaoPoint> points;
+    for (const auto& f : hull.data_files) {
+      const auto pts = io::ReadTankRaoCsv(f);
+      points.insert(points.end(), pts.begin(), pts.end());
+      files += (files.empty() ? "" : ", ") + f;
+    }
+    const auto hc = io::GroupTankRaoBySpeed(points, cfg.speeds_Fn, hull.name, hull.parameter);
+    cases.insert(cases.end(), hc.begin(), hc.end());
+  }
+  std::string error;
+  if (!opt::CheckCalibrationData(cases, cfg.options, &error)) {
+    throw io::InputError(config_file + ": calibrate data (" + files + "): " + error);
+  }
+  const opt::CsRaoModel model = MakeCalibrationModel(root, cfg, cases);
+  root.Finish();
+
+  // Ceres logs failed model evaluations through glog to stderr; CalibrateCs reports them in its warnings or
+  // its exception instead, so keep the terminal to the one-line error rule.
+  FLAGS_minloglevel = google::GLOG_FATAL;
+  opt::CsCalibrationResult r;
+  try {
+    r = opt::CalibrateCs(model, cases, cfg.options);
+  } catch (const std::invalid_argument& e) {
+    throw io::InputError(config_file + ": " + e.what());
+  } catch (const std::domain_error& e) {
+    throw io::InputError(config_file + ": " + e.what());
+  }
+
+  PrepareOutputDir(out_dir, "calibrate", config_file, root.resolved());
+  Write(OutPath(out_dir, "calibration.json"), io::CalibrationJson(cfg, cases, r));
+  Write(OutPath(out_dir, "calibration_report.txt"), r.FullReport());
+  io::WriteSvg(io::CalibrationPlot(cases, r, cfg.options.Cs_initial),
+               OutPath(out_dir, "calibration_plot.svg"));
+  std::vector<std::string> snippets;
+  if (r.mode == opt::CsFitMode::kSingle) {
+    snippets.push_back("calibrated_solver.yaml");
+    Write(OutPath(out_dir, snippets.back()), io::CalibratedSolverYaml(cfg, cases, r, 0));
+  } else {
+    for (int c = 0; c < static_cast<int>(cases.size()); ++c) {
+      snippets.push_back("calibrated_solver_" + FileLabel(cases[c].label) + ".yaml");
+      Write(OutPath(out_dir, snippets.back()), io::CalibratedSolverYaml(cfg, cases, r, c));
+    }
+  }
+
+  std::cout << r.BriefReport() << "\n";
+  for (const auto& pk : r.peaks) {
+    std::printf("  %s %s peak: measured %.4g, computed %.4g (%+.1f%%) before, %.4g (%+.1f%%) after\n",
+                cases[pk.case_index].label.c_str(), pk.quantity.c_str(), pk.measured.value, pk.before.value,
+                100 * pk.RelativeErrorBefore(), pk.after.value, 100 * pk.RelativeErrorAfter());
+  }
+  for (const auto& w : r.warnings) std::cout << "  warning: " << w << "\n";
+  std::cout << "wrote " << out_dir << "/{calibration.json, calibration_report.txt, calibration_plot.svg";
+  for (const auto& s : snippets) std::cout << ", " << s;
+  std::cout << ", config.resolved.yaml, VERSION}\n";
+}
+
+}  // namespace
+
 void AddCalibrateCommand(CLI::App& app) {
-  auto* cmd = app.add_subcommand("calibrate", "(not yet available in this version)");
-  cmd->allow_extras();
-  cmd->callback([] { throw io::InputError("'hullopt calibrate' is not implemented yet in this version"); });
+  auto* cmd = app.add_subcommand(
+      "calibrate",
+      "Fit the sectional damping coefficient Cs to measured heave and pitch RAOs (tank RAO CSV files)");
+  auto config = std::make_shared<std::string>();
+  auto out = std::make_shared<std::string>();
+  cmd->add_option("CONFIG", *config, "YAML config with a 'calibrate:' section")->required();
+  cmd->add_option("--out", *out, "output folder")->required();
+  cmd->callback([config, out] { RunCalibrate(*config, *out); });
 }
 
 }  // namespace hullopt::app

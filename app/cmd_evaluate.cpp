@@ -1,13 +1,208 @@
+// `hullopt evaluate CONFIG --out DIR`: rms accelerations and motion sickness incidence of one or more designs
+// in a list of head seas; writes msi.csv, summary.json and the seakeeping plots.
+//
+// Until the ship-motion solver is wired in, the RAOs come from rao.csv files (the `hullopt rao` output):
+//
+//   rao_csv: out/rao/rao.csv                 # one design ...
+//   name: delft372                           # optional, default: the file's parent folder or stem
+//   hull_extent: { cg_to_transom_m: 1.41, cg_to_bow_m: 1.59 }
+//
+//   designs:                                 # ... or several
+//     - { name: hull4, group: catamaran, rao_csv: a.csv, cg_to_transom_m: 20, cg_to_bow_m: 25,
+//         parameters: { Fr: 0.8, Cvp: 0.6, B_over_T: 2.0 } }
+//
+//   speed: { kn: 40 }                        # optional check of the speed implied by the RAO files
+//   water: { g_m_s2: 9.81 }                  # optional
+//   seas: [...]; msi: {...}; positions: { points: [...] }   (io/seas_config.h)
+//   report: { plots: true }
+// Keys of the full tool (hull, mass, solver) are accepted and left to the solver path.
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+#include <stdexcept>
+
 #include "app/commands.h"
+#include "app/output_dir.h"
+#include "io/evaluation_report.h"
 #include "io/input_error.h"
+#include "io/rao_table_csv.h"
+#include "io/seas_config.h"
+#include "io/yaml_map.h"
+#include "seakeeping/design_evaluation.h"
 
 namespace hullopt::app {
+namespace {
 
-// Placeholder until the evaluate issue lands: registered so --help lists the whole tool.
+constexpr double kKnot = 1852.0 / 3600.0;  // [m/s]
+
+// A data path from the config: as given if it exists (relative to the working folder), else relative to the
+// config file's folder.
+std::string DataPath(const std::string& given, const std::string& config_file) {
+  namespace fs = std::filesystem;
+  if (fs::path(given).is_absolute() || fs::exists(given)) return given;
+  const fs::path beside = fs::path(config_file).parent_path() / given;
+  return fs::exists(beside) ? beside.string() : given;
+}
+
+std::string DefaultName(const std::string& csv) {
+  namespace fs = std::filesystem;
+  const fs::path p(csv);
+  const std::string parent = p.parent_path().filename().string();
+  return p.stem() == "rao" && !parent.empty() ? parent : p.stem().string();
+}
+
+struct DesignInput {
+  io::EvaluatedDesign design;
+  std::string where;  // config location for messages
+};
+
+DesignInput ReadDesign(io::YamlMap& m, const std::string& config_file, double g, bool single) {
+  DesignInput in;
+  in.where = m.Where("rao_csv");
+  const std::string csv = DataPath(m.String("rao_csv"), config_file);
+  // Record the file actually read, absolute, so config.resolved.yaml re-runs from any folder.
+  m.resolved()["rao_csv"] = std::filesystem::absolute(csv).lexically_normal().string();
+  in.design.name = m.String("name", DefaultName(csv));
+  if (in.design.name.empty()) m.Fail("name", "must not be empty");
+  if (!single) {
+    in.design.group = m.String("group", "");
+    in.design.hull.cg_to_transom_m = m.Number("cg_to_transom_m");
+    in.design.hull.cg_to_bow_m = m.Number("cg_to_bow_m");
+    io::YamlMap params = m.MapOrEmpty("parameters");
+    for (const auto& key : params.Keys()) in.design.parameters[key] = params.Number(key);
+    params.Finish();
+  } else {
+    io::YamlMap ext = m.Map("hull_extent");
+    in.design.hull.cg_to_transom_m = ext.Number("cg_to_transom_m");
+    in.design.hull.cg_to_bow_m = ext.Number("cg_to_bow_m");
+    ext.Finish();
+  }
+  std::string error;
+  if (!in.design.hull.IsValid(&error)) throw io::InputError(in.where + ": " + error);
+  in.design.rao = io::ReadRaoTableCsv(csv, g);
+  return in;
+}
+
+double ReadSpeedCheck(io::YamlMap& root) {
+  if (!root.Has("speed")) return NAN;
+  io::YamlMap s = root.Map("speed");
+  double u = NAN;
+  if (s.Has("kn")) u = s.Number("kn") * kKnot;
+  if (s.Has("m_s")) u = s.Number("m_s");
+  if (s.Has("Fn")) s.Skip("Fn");  // needs the hull length: checked on the solver path
+  s.Finish();
+  return u;
+}
+
+void Run(const std::string& config_file, const std::string& out_dir) {
+  const auto t0 = std::chrono::steady_clock::now();
+  io::YamlMap root = io::YamlMap::LoadFile(config_file);
+  io::YamlMap water = root.MapOrEmpty("water");
+  const double g = water.Number("g_m_s2", 9.81);
+  if (water.Has("rho_kg_m3")) water.Number("rho_kg_m3");
+  if (!(g > 5.0 && g < 15.0)) water.Fail("g_m_s2", "must be within 5..15 m/s²");
+  water.Finish();
+  const double speed_check = ReadSpeedCheck(root);
+
+  const bool single = root.Has("rao_csv"), multi = root.Has("designs");
+  if (single == multi)
+    throw io::InputError(
+        config_file +
+        ": give either 'rao_csv' (one design) or 'designs' (a list); evaluate reads RAOs from "
+        "rao.csv files until the ship-motion solver is wired in");
+  for (const char* key : {"hull", "mass", "solver"})
+    if (root.Has(key)) root.Skip(key);
+
+  std::vector<DesignInput> inputs;
+  if (single) {
+    inputs.push_back(ReadDesign(root, config_file, g, true));
+  } else {
+    for (io::YamlMap& d : root.ListOfMaps("designs")) {
+      inputs.push_back(ReadDesign(d, config_file, g, false));
+      d.Finish();
+    }
+  }
+  for (size_t i = 0; i < inputs.size(); ++i)
+    for (size_t j = 0; j < i; ++j)
+      if (inputs[i].design.name == inputs[j].design.name)
+        throw io::InputError(inputs[i].where + ": design name '" + inputs[i].design.name + "' is used twice");
+  if (std::isfinite(speed_check)) {
+    for (const auto& in : inputs) {
+      const double u = in.design.rao.speed_m_s;
+      if (std::abs(u - speed_check) > 0.01 * speed_check + 0.01) {
+        char buf[256];
+        std::snprintf(buf, sizeof buf, ": the RAO file implies %.3f m/s (%.2f kn) but speed is %.3f m/s", u,
+                      u / kKnot, speed_check);
+        throw io::InputError(in.where + buf);
+      }
+    }
+  }
+
+  const std::vector<sk::SeaState> seas = io::ReadSeas(root);
+  sk::EvaluationOptions options;
+  options.msi = io::ReadMsiOptions(root);
+  io::YamlMap positions = root.MapOrEmpty("positions");
+  // Points are checked against each design's hull below (designs differ in length).
+  const std::vector<sk::PassengerPosition> points = io::ReadPassengerPoints(positions, nullptr);
+  positions.Finish();
+  io::YamlMap report_map = root.MapOrEmpty("report");
+  io::EvaluationReportOptions report;
+  report.plots = report_map.Boolean("plots", true);
+  report_map.Finish();
+  root.Finish();
+
+  for (const auto& in : inputs) {
+    for (const auto& p : points) {
+      std::string error;
+      if (!sk::IsValidPassengerPosition(p, in.design.hull, &error))
+        throw io::InputError(positions.Where("points") + ": design '" + in.design.name + "': " + error);
+    }
+  }
+
+  std::vector<io::EvaluatedDesign> designs;
+  const std::vector<sk::WaveSpectrum> spectra = sk::BuildSpectra(seas);
+  for (auto& in : inputs) {
+    try {
+      in.design.evaluation = sk::EvaluateDesign(in.design.rao, in.design.hull, spectra, points, options);
+    } catch (const std::invalid_argument& e) {
+      throw io::InputError(in.where + ": design '" + in.design.name + "': " + e.what());
+    }
+    designs.push_back(in.design);
+  }
+
+  PrepareOutputDir(out_dir, "evaluate", config_file, root.resolved());
+  const auto files = io::WriteEvaluationOutputs(out_dir, designs, options, report);
+  for (const auto& w : io::EvaluationWarnings(designs, report))
+    std::cerr << "hullopt: warning: " << w << "\n";
+
+  std::printf("%-16s %6s %6s %10s %10s %10s %8s\n", "design", "Hs_m", "Tz_s", "fwd_g/m", "lcg_g/m",
+              "transom_g/m", "MSI_%");
+  for (const auto& d : designs) {
+    for (const auto& s : d.evaluation.seas) {
+      const double h = s.sea.Hs_m;
+      std::printf("%-16s %6.2f %6.2f %10.4f %10.4f %10.4f %8.1f\n", d.name.c_str(), h, s.Tz_s,
+                  s.positions[0].rms_accel_g / h, s.positions[1].rms_accel_g / h,
+                  s.positions[2].rms_accel_g / h, s.mean.msi_pct);
+    }
+  }
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  std::printf("wrote %zu files to %s (%.2f s); MSI model %s\n", files.size() + 2, out_dir.c_str(), seconds,
+              sk::MsiModelName(options.msi.model).c_str());
+}
+
+}  // namespace
+
 void AddEvaluateCommand(CLI::App& app) {
-  auto* cmd = app.add_subcommand("evaluate", "(not yet available in this version)");
-  cmd->allow_extras();
-  cmd->callback([] { throw io::InputError("'hullopt evaluate' is not implemented yet in this version"); });
+  auto* cmd = app.add_subcommand(
+      "evaluate",
+      "rms accelerations and motion sickness incidence in head seas (msi.csv, summary.json, plots)");
+  auto config = std::make_shared<std::string>();
+  auto out = std::make_shared<std::string>("out/evaluate");
+  cmd->add_option("config", *config, "YAML config (rao_csv or designs, seas, msi, positions)")->required();
+  cmd->add_option("--out", *out, "output folder")->capture_default_str();
+  cmd->callback([config, out] { Run(*config, *out); });
 }
 
 }  // namespace hullopt::app

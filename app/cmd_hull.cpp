@@ -1,13 +1,87 @@
+// hullopt hull CONFIG --out DIR: generate or read a hull, write its hydrostatics, offsets and body plan.
+#include <cmath>
+#include <iostream>
+#include <memory>
+#include <sstream>
+#include <stdexcept>
+
 #include "app/commands.h"
+#include "app/output_dir.h"
+#include "io/bodyplan_svg.h"
+#include "io/hull_config.h"
+#include "io/hydrostatics_json.h"
 #include "io/input_error.h"
+#include "io/offsets_csv.h"
+#include "io/speed_config.h"
+#include "io/water_config.h"
+#include "parametric_hull/hydrostatics.h"
 
 namespace hullopt::app {
+namespace {
 
-// Placeholder until the hull issue lands: registered so --help lists the whole tool.
+// Top-level keys other commands own; a shared campaign config may carry them.
+const char* const kOtherCommandsKeys[] = {"solver",    "seas",     "section", "optimize",
+                                          "calibrate", "evaluate", "explore"};
+
+void RunHull(const std::string& config, const std::string& out_dir) {
+  io::YamlMap root = io::YamlMap::LoadFile(config);
+  const io::WaterOptions water = io::ParseWater(root);
+  const io::HullOptions hull_opts = io::ParseHullConfig(root, water);
+  bool has_speed = false;
+  const io::SpeedOptions speed = io::ParseSpeed(root, false, &has_speed);
+  double kg_m = 0.0;
+  {
+    io::YamlMap mass = root.MapOrEmpty("mass");
+    kg_m = mass.Number("kg_m", 0.0);
+    if (kg_m < 0.0) mass.Fail("kg_m", "must be >= 0 m above the baseline");
+    mass.Skip("lcg_m_from_ap");
+    mass.Skip("kyy_m");
+    mass.Finish();
+  }
+  for (const char* k : kOtherCommandsKeys) root.Skip(k);
+  root.Finish();
+
+  const hull::HullForm hull = io::LoadHull(hull_opts, config);
+  hull::Hydrostatics hs;
+  try {
+    hs = hull::ComputeHydrostatics(hull, water.rho_kg_m3, kg_m);
+  } catch (const std::logic_error& e) {
+    throw io::InputError(config + ": key 'hull': " + e.what());
+  }
+  PrepareOutputDir(out_dir, "hull", config, root.resolved());
+  io::HydrostaticsReport rep;
+  rep.hs = hs;
+  rep.rho_kg_m3 = water.rho_kg_m3;
+  rep.g_m_s2 = water.g_m_s2;
+  if (has_speed) rep.speed_m_s = speed.MetresPerSecond(hs.L_m, water.g_m_s2);
+  io::WriteHydrostaticsJson(OutPath(out_dir, "hydrostatics.json"), hull, rep);
+  io::WriteOffsetsCsv(OutPath(out_dir, "offsets.csv"), hull);
+  std::ostringstream title;
+  title << hull.type << " — L " << hs.L_m << " m, B " << hs.B_m << " m, T " << hs.T_m << " m, "
+        << hs.displacement_t << " t";
+  io::WriteBodyPlanSvg(OutPath(out_dir, "bodyplan.svg"), hull, title.str());
+
+  std::cout << "hull " << hull.type << ": L = " << hs.L_m << " m, B = " << hs.B_m << " m, T = " << hs.T_m
+            << " m, displacement = " << hs.displacement_t << " t (rho " << water.rho_kg_m3 << " kg/m^3)\n"
+            << "  Cb " << hs.Cb << "  Cp " << hs.Cp << "  Cm " << hs.Cm << "  Cwp " << hs.Cwp << "  Cvp "
+            << hs.Cvp << "  LCB " << hs.LCB_pct_L << " %L  LCF " << hs.LCF_pct_L << " %L";
+  if (rep.speed_m_s) std::cout << "  Fr " << *rep.speed_m_s / std::sqrt(water.g_m_s2 * hs.L_m);
+  std::cout << "\n  wrote " << out_dir
+            << "/{hydrostatics.json, offsets.csv, bodyplan.svg, config.resolved.yaml}\n";
+}
+
+}  // namespace
+
 void AddHullCommand(CLI::App& app) {
-  auto* cmd = app.add_subcommand("hull", "(not yet available in this version)");
-  cmd->allow_extras();
-  cmd->callback([] { throw io::InputError("'hullopt hull' is not implemented yet in this version"); });
+  auto* cmd = app.add_subcommand("hull",
+                                 "Generate (parametric) or read (offsets CSV / STL) a hull and write "
+                                 "hydrostatics.json, offsets.csv and bodyplan.svg");
+  auto config = std::make_shared<std::string>();
+  auto out = std::make_shared<std::string>();
+  cmd->add_option("config", *config, "YAML config with a hull: map (and optional water:, speed:, mass:)")
+      ->required();
+  cmd->add_option("--out", *out, "output folder")->required();
+  cmd->callback([config, out] { RunHull(*config, *out); });
 }
 
 }  // namespace hullopt::app

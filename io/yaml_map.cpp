@@ -18,10 +18,14 @@ std::string Scalar(const YAML::Node& n) {
 }  // namespace
 
 YamlMap::YamlMap(const YAML::Node& node, std::string path, std::string file, YAML::Node resolved)
-    : node_(node), path_(std::move(path)), file_(std::move(file)), resolved_(resolved),
+    : node_(node),
+      path_(std::move(path)),
+      file_(std::move(file)),
+      resolved_(resolved),
       used_(std::make_shared<std::set<std::string>>()) {
   if (node_ && !node_.IsNull() && !node_.IsMap()) {
-    throw InputError(file_ + ":" + Line(node_) + ": key '" + path_ + "' must be a mapping of key: value pairs");
+    throw InputError(file_ + ":" + Line(node_) + ": key '" + path_ +
+                     "' must be a mapping of key: value pairs");
   }
 }
 

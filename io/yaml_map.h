@@ -17,13 +17,14 @@ class YamlMap {
  public:
   /// node must be a mapping (or null = empty). path is the dotted key path ("" at the root), file the source.
   YamlMap(const YAML::Node& node, std::string path, std::string file, YAML::Node resolved);
-  /// Loads a YAML file as the root mapping. Throws InputError for a missing file or a syntax error (with line).
+  /// Loads a YAML file as the root mapping. Throws InputError for a missing file or a syntax error (with
+  /// line).
   static YamlMap LoadFile(const std::string& file);
 
   bool Has(const std::string& key) const;
 
-  double Number(const std::string& key);                         ///< required finite number
-  double Number(const std::string& key, double default_value);   ///< optional finite number
+  double Number(const std::string& key);                        ///< required finite number
+  double Number(const std::string& key, double default_value);  ///< optional finite number
   int Integer(const std::string& key);
   int Integer(const std::string& key, int default_value);
   bool Boolean(const std::string& key, bool default_value);
@@ -35,8 +36,8 @@ class YamlMap {
   std::vector<double> Numbers(const std::string& key);  ///< a non-empty sequence of finite numbers
   std::vector<std::string> Strings(const std::string& key);
 
-  YamlMap Map(const std::string& key);               ///< required sub-mapping
-  YamlMap MapOrEmpty(const std::string& key);        ///< optional sub-mapping (empty when absent)
+  YamlMap Map(const std::string& key);                      ///< required sub-mapping
+  YamlMap MapOrEmpty(const std::string& key);               ///< optional sub-mapping (empty when absent)
   std::vector<YamlMap> ListOfMaps(const std::string& key);  ///< required non-empty sequence of mappings
   /// Keys of this mapping in file order (for maps whose keys are user names, e.g. variables).
   std::vector<std::string> Keys() const;

@@ -13,13 +13,13 @@ namespace hullopt::hull {
 /// centreline, as a polyline from the keel (y = 0) up to the deck edge. y may rise and fall (SWATH bulb),
 /// z is non-decreasing along the contour.
 struct Station {
-  double x_m = 0.0;            ///< [m] longitudinal position from AP, positive forward
-  std::vector<double> y_m;     ///< [m] half-breadth from the demihull centreline, >= 0
-  std::vector<double> z_m;     ///< [m] height above the baseline
+  double x_m = 0.0;         ///< [m] longitudinal position from AP, positive forward
+  std::vector<double> y_m;  ///< [m] half-breadth from the demihull centreline, >= 0
+  std::vector<double> z_m;  ///< [m] height above the baseline
 };
 
-/// A hull body symmetric about its own centreline plane at y = y_centre_m. If y_centre_m > 0 the body is one of
-/// a mirror pair at ±y_centre_m (catamaran/SWATH demihulls, trimaran outriggers); if 0 it sits on the ship
+/// A hull body symmetric about its own centreline plane at y = y_centre_m. If y_centre_m > 0 the body is one
+/// of a mirror pair at ±y_centre_m (catamaran/SWATH demihulls, trimaran outriggers); if 0 it sits on the ship
 /// centreline (monohull, trimaran main hull).
 struct Demihull {
   std::string role;               ///< "main", "demihull", "outrigger": for reports and plots
@@ -29,10 +29,10 @@ struct Demihull {
 
 /// A complete hull at its design draught.
 struct HullForm {
-  std::string type;               ///< monohull | catamaran | swath | trihull | offsets
-  std::vector<Demihull> bodies;   ///< first body is the main hull / the demihull
-  double draught_m = 0.0;         ///< [m] design waterline height above the baseline
-  double length_m = 0.0;          ///< [m] waterline length L of the main body, AP to FP
+  std::string type;              ///< monohull | catamaran | swath | trihull | offsets
+  std::vector<Demihull> bodies;  ///< first body is the main hull / the demihull
+  double draught_m = 0.0;        ///< [m] design waterline height above the baseline
+  double length_m = 0.0;         ///< [m] waterline length L of the main body, AP to FP
   /// Number of physical bodies counting mirror pairs twice (1 monohull, 2 catamaran, 3 trihull).
   int BodyCount() const {
     int n = 0;

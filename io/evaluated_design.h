@@ -1,0 +1,21 @@
+#pragma once
+// One design after evaluation: what the writers of msi.csv, summary.json and the seakeeping plots need.
+#include <map>
+#include <string>
+
+#include "seakeeping/design_evaluation.h"
+#include "seakeeping/passenger_positions.h"
+#include "seakeeping/rao_table.h"
+
+namespace hullopt::io {
+
+struct EvaluatedDesign {
+  std::string name;                          ///< design name (msi.csv `design` column)
+  std::string group;                         ///< plot panel, e.g. "catamaran"; empty = one panel for all
+  std::map<std::string, double> parameters;  ///< e.g. Fr, Cvp, B_over_T: x axes of the MSI-vs-parameter plots
+  sk::RaoTable rao;
+  sk::HullExtent hull;
+  sk::DesignEvaluation evaluation;  ///< sk::EvaluateDesign(rao, hull, seas, ...)
+};
+
+}  // namespace hullopt::io

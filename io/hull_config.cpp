@@ -1,0 +1,144 @@
+#include "io/hull_config.h"
+
+#include <stdexcept>
+
+#include "io/offsets_csv.h"
+#include "io/stl_reader.h"
+#include "parametric_hull/hull_generator.h"
+#include "parametric_hull/section_geometry.h"
+
+namespace hullopt::io {
+namespace {
+
+// Default stations for slicing an STL.
+constexpr int kDefaultStlStations = 41;
+
+hull::DesignVariables ParseParametric(YamlMap& p, const WaterOptions& water) {
+  hull::DesignVariables d;
+  const std::string type = p.Choice("type", {"monohull", "catamaran", "swath", "trihull"});
+  d.type = hull::ParseHullType(type);
+  const std::string default_style = d.type == hull::HullType::kSwath ? "swath_bulb" : "round_bilge";
+  d.section_style = hull::ParseSectionStyle(
+      p.Choice("section_style", {"round_bilge", "hard_chine", "swath_bulb"}, default_style));
+  d.rho_kg_m3 = water.rho_kg_m3;
+  d.displacement_t = p.Number("displacement_t");
+  d.L_over_B = p.Number("L_over_B");
+  d.B_over_T = p.Number("B_over_T");
+  d.Cb = p.Number("Cb");
+  d.Cp = p.Number("Cp");
+  d.Cwp = p.Number("Cwp");
+  d.LCB_pct_L = p.Number("LCB_pct_L");
+  d.LCF_pct_L = p.Number("LCF_pct_L");
+  d.transom_immersion = p.Number("transom_immersion", d.transom_immersion);
+  d.transom_beam_ratio = p.Number("transom_beam_ratio", d.transom_beam_ratio);
+  d.keel_rise = p.Number("keel_rise", d.keel_rise);
+  d.spacing_over_L = p.Number("spacing_over_L", d.spacing_over_L);
+  d.strut_ratio = p.Number("strut_ratio", d.strut_ratio);
+  d.outrigger_length_ratio = p.Number("outrigger_length_ratio", d.outrigger_length_ratio);
+  d.outrigger_L_over_B = p.Number("outrigger_L_over_B", d.outrigger_L_over_B);
+  d.outrigger_B_over_T = p.Number("outrigger_B_over_T", d.outrigger_B_over_T);
+  d.outrigger_offset_over_L = p.Number("outrigger_offset_over_L", d.outrigger_offset_over_L);
+  d.freeboard_over_T = p.Number("freeboard_over_T", d.freeboard_over_T);
+  d.stations = p.Integer("stations", d.stations);
+  d.section_points = p.Integer("section_points", d.section_points);
+  p.Finish();
+  std::string error;
+  if (!d.IsValid(&error)) {
+    // error is "name = value: rule"; point at the key when it is one of this map's keys.
+    const std::string name = error.substr(0, error.find(' '));
+    const std::string rule = error.substr(error.find(": ") + 2);
+    if (p.Has(name)) p.Fail(name, rule);
+    throw InputError(p.Where(p.Has("Cb") ? "Cb" : "type") + ": " + error);
+  }
+  return d;
+}
+
+}  // namespace
+
+bool HullOptions::IsValid(std::string* error) const {
+  if (source == Source::kParametric) return design.IsValid(error);
+  auto fail = [&](const std::string& m) {
+    if (error) *error = m;
+    return false;
+  };
+  if (file.empty()) return fail("file: must name an offsets CSV or STL file");
+  if (!(draught_m > 0.0)) return fail("draught_m = " + std::to_string(draught_m) + ": must be > 0");
+  if (hulls != 1 && hulls != 2) return fail("hulls = " + std::to_string(hulls) + ": must be 1 or 2");
+  if (hulls == 2 && !(spacing_m > 0.0))
+    return fail("spacing_m = " + std::to_string(spacing_m) + ": must be > 0 for two hulls");
+  if (stations != 0 && stations < 3)
+    return fail("stations = " + std::to_string(stations) + ": must be 0 (keep) or >= 3");
+  if (length_m < 0.0) return fail("length_m: must be >= 0");
+  return true;
+}
+
+HullOptions ParseHullConfig(YamlMap& root, const WaterOptions& water) {
+  YamlMap h = root.Map("hull");
+  HullOptions o;
+  const int sources = int(h.Has("parametric")) + int(h.Has("offsets_csv")) + int(h.Has("stl"));
+  if (sources != 1)
+    throw InputError(root.Where("hull") + ": give exactly one of parametric, offsets_csv, stl (found " +
+                     std::to_string(sources) + ")");
+  if (h.Has("parametric")) {
+    o.source = HullOptions::Source::kParametric;
+    YamlMap p = h.Map("parametric");
+    o.design = ParseParametric(p, water);
+    o.design.spacing_m = h.Number("spacing_m", 0.0);
+    if (o.design.spacing_m < 0.0) h.Fail("spacing_m", "must be >= 0 (0 = use parametric.spacing_over_L)");
+    const int hulls = h.Integer(
+        "hulls",
+        o.design.type == hull::HullType::kCatamaran || o.design.type == hull::HullType::kSwath ? 2 : 1);
+    const int expected =
+        o.design.type == hull::HullType::kCatamaran || o.design.type == hull::HullType::kSwath ? 2 : 1;
+    if (hulls != expected)
+      h.Fail("hulls", "must be " + std::to_string(expected) + " for a " + hull::ToString(o.design.type) +
+                          " (trihull outriggers are not counted)");
+    o.hulls = hulls;
+    h.Finish();
+    return o;
+  }
+  o.source = h.Has("stl") ? HullOptions::Source::kStl : HullOptions::Source::kOffsetsCsv;
+  o.file = h.String(h.Has("stl") ? "stl" : "offsets_csv");
+  o.draught_m = h.Number("draught_m");
+  if (!(o.draught_m > 0.0)) h.Fail("draught_m", "must be > 0 m");
+  o.hulls = h.Integer("hulls", 1);
+  if (o.hulls != 1 && o.hulls != 2) h.Fail("hulls", "must be 1 (monohull) or 2 (catamaran/SWATH demihulls)");
+  o.spacing_m = h.Number("spacing_m", 0.0);
+  if (o.hulls == 2 && !(o.spacing_m > 0.0))
+    h.Fail("spacing_m", "must be > 0 m (demihull centreline spacing) when hulls = 2");
+  if (o.hulls == 1 && o.spacing_m != 0.0) h.Fail("spacing_m", "only applies to hulls = 2");
+  o.stations = h.Integer("stations", o.source == HullOptions::Source::kStl ? kDefaultStlStations : 0);
+  if (o.stations != 0 && o.stations < 3) h.Fail("stations", "must be 0 (keep the file's stations) or >= 3");
+  o.length_m = h.Number("length_m", 0.0);
+  if (o.length_m < 0.0) h.Fail("length_m", "must be >= 0 m (0 = span of the wetted stations)");
+  h.Finish();
+  return o;
+}
+
+hull::HullForm LoadHull(const HullOptions& o, const std::string& config_file) {
+  if (o.source == HullOptions::Source::kParametric) {
+    try {
+      return hull::GenerateHull(o.design);
+    } catch (const std::logic_error& e) {  // invalid_argument and domain_error
+      throw InputError(config_file + ": key 'hull.parametric': " + e.what());
+    }
+  }
+  hull::HullForm h;
+  h.draught_m = o.draught_m;
+  h.length_m = o.length_m;
+  hull::Demihull body;
+  if (o.source == HullOptions::Source::kOffsetsCsv) {
+    h.type = "offsets";
+    body = ReadOffsetsCsv(o.file, o.draught_m);
+  } else {
+    h.type = "stl";
+    body = SliceStl(ReadStl(o.file), o.stations, o.draught_m, o.file);
+  }
+  body.role = o.hulls == 2 ? "demihull" : "main";
+  body.y_centre_m = o.hulls == 2 ? 0.5 * o.spacing_m : 0.0;
+  h.bodies = {body};
+  if (o.stations > 0 && o.source == HullOptions::Source::kOffsetsCsv) h = hull::Resample(h, o.stations);
+  return h;
+}
+
+}  // namespace hullopt::io

@@ -1,0 +1,45 @@
+#pragma once
+// The `hull:` map (ARCHITECTURE §4) → options, and loading the hull they describe.
+//   hull:
+//     parametric: {type, displacement_t, L_over_B, B_over_T, Cb, Cp, Cwp, LCB_pct_L, LCF_pct_L, ...}
+//     spacing_m: 20          # optional absolute demihull spacing (else parametric.spacing_over_L)
+//   or
+//     offsets_csv: data/delft372/delft372_offsets.csv   # or stl: file.stl
+//     draught_m: 0.15
+//     hulls: 2               # 1 monohull, 2 catamaran/SWATH demihulls
+//     spacing_m: 0.70        # demihull centreline spacing (needed when hulls = 2)
+//     stations: 0            # resample to this many equally spaced stations (0 = keep the file's; STL: 41)
+//     length_m: 0            # waterline length L for coefficients (0 = span of the wetted stations)
+// File paths are relative to the working directory.
+#include <string>
+
+#include "io/water_config.h"
+#include "io/yaml_map.h"
+#include "parametric_hull/design_variables.h"
+#include "parametric_hull/hull_form.h"
+
+namespace hullopt::io {
+
+struct HullOptions {
+  enum class Source { kParametric, kOffsetsCsv, kStl };
+  Source source = Source::kParametric;
+  hull::DesignVariables design;  ///< parametric source (rho from water:)
+  std::string file;              ///< offsets CSV or STL path
+  double draught_m = 0.0;        ///< [m] file sources
+  int hulls = 1;                 ///< file sources: 1 or 2
+  double spacing_m = 0.0;        ///< [m] demihull centreline spacing (file sources with hulls = 2)
+  int stations = 0;              ///< resample to this many stations (0 = as read)
+  double length_m = 0.0;         ///< [m] waterline length override for file sources (0 = from the stations)
+  bool IsValid(std::string* error) const;
+};
+
+/// Parses the `hull:` map of root; water gives the density used for a parametric displacement. Throws
+/// InputError naming file, line, key and rule (missing, unknown, wrong type, NaN, out of range, both or
+/// neither of parametric / offsets_csv / stl).
+HullOptions ParseHullConfig(YamlMap& root, const WaterOptions& water);
+
+/// Builds or reads the hull. File errors are InputError with file and line; a parametric combination that
+/// cannot be met becomes InputError "key 'hull.parametric': <rule>" (where = config file for messages).
+hull::HullForm LoadHull(const HullOptions& options, const std::string& config_file);
+
+}  // namespace hullopt::io

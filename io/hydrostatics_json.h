@@ -1,0 +1,24 @@
+#pragma once
+// hydrostatics.json of `hullopt hull` (ARCHITECTURE §4): L_m, B_m, T_m, volume_m3, displacement_t, Cb, Cp,
+// Cm, Cwp, Cvp, LCB_pct_L, LCF_pct_L, Fr (coefficients per reference hull, see
+// parametric_hull/hydrostatics.h), for a multihull also hulls and spacing_m; plus the other hydrostatic
+// quantities with units in their names.
+#include <optional>
+#include <string>
+
+#include "parametric_hull/hull_form.h"
+#include "parametric_hull/hydrostatics.h"
+
+namespace hullopt::io {
+
+struct HydrostaticsReport {
+  hull::Hydrostatics hs;
+  double rho_kg_m3 = 1025.0;
+  double g_m_s2 = 9.81;
+  std::optional<double> speed_m_s;  ///< [m/s]; Fr is written as null without it
+};
+
+/// Writes the JSON file; throws InputError if it cannot be written.
+void WriteHydrostaticsJson(const std::string& path, const hull::HullForm& hull, const HydrostaticsReport& r);
+
+}  // namespace hullopt::io

@@ -1,0 +1,86 @@
+#include "io/motion_config.h"
+
+#include <sstream>
+
+namespace hullopt::io {
+namespace {
+
+sk::FrequencySpec ParseFrequencies(YamlMap& f) {
+  using Q = sk::FrequencySpec::Quantity;
+  const std::vector<std::pair<std::string, Q>> lists = {
+      {"lambda_over_L", Q::kLambdaOverL}, {"omega_rad_s", Q::kOmega}, {"omega_e_rad_s", Q::kOmegaE}};
+  int given = f.Has("range") ? 1 : 0;
+  for (const auto& [key, q] : lists) given += f.Has(key) ? 1 : 0;
+  if (given != 1)
+    f.Fail("range", "give exactly one of lambda_over_L, omega_rad_s, omega_e_rad_s (lists) or range");
+  sk::FrequencySpec spec;
+  std::string bad_key;
+  if (f.Has("range")) {
+    auto r = f.Map("range");
+    const std::string qn = r.Choice("quantity", {"lambda_over_L", "omega_rad_s", "omega_e_rad_s"});
+    Q q = Q::kOmegaE;
+    for (const auto& [key, qq] : lists)
+      if (key == qn) q = qq;
+    const double from = r.Number("from"), to = r.Number("to");
+    const int count = r.Integer("count");
+    if (count < 1) r.Fail("count", "must be >= 1");
+    if (!(from > 0.0)) r.Fail("from", "must be > 0");
+    if (!(to > 0.0)) r.Fail("to", "must be > 0");
+    r.Finish();
+    spec = sk::FrequencySpec::Range(q, from, to, count);
+    bad_key = "range";
+  } else {
+    for (const auto& [key, q] : lists) {
+      if (!f.Has(key)) continue;
+      spec.quantity = q;
+      spec.values = f.Numbers(key);
+      bad_key = key;
+    }
+  }
+  std::string err;
+  if (!spec.IsValid(&err)) f.Fail(bad_key, err);
+  f.Finish();
+  return spec;
+}
+
+}  // namespace
+
+SolverConfig ParseSolverConfig(YamlMap& s) {
+  SolverConfig c;
+  c.method = s.Choice("method", {"time_domain_strip", "strip_theory_stf"}, c.method);
+  c.sections = s.Integer("sections", c.sections);
+  if (c.sections < 2) s.Fail("sections", "must be >= 2 (the paper uses 40)");
+  c.panels = s.Integer("panels", c.panels);
+  if (c.panels < 4 || c.panels % 2 != 0) s.Fail("panels", "must be even and >= 4 (the paper uses 14)");
+  c.cs = s.Number("Cs", c.cs);
+  if (c.cs < 0.0) s.Fail("Cs", "must be >= 0 (the paper's values are 0 to 0.15)");
+  c.hydrodynamic_fraction = s.Number("hydrodynamic_fraction", c.hydrodynamic_fraction);
+  if (!(c.hydrodynamic_fraction > 0.0 && c.hydrodynamic_fraction <= 1.0))
+    s.Fail("hydrodynamic_fraction", "must satisfy 0 < fraction <= 1 (the paper uses 0.2 to 0.4)");
+  c.path = s.Choice("path", {"periodic", "time_marching"}, c.path);
+  c.interaction = s.Boolean("interaction", c.interaction);
+  auto f = s.Map("frequencies");
+  c.frequencies = ParseFrequencies(f);
+  s.Finish();
+  return c;
+}
+
+hull::MassProperties ParseMassConfig(YamlMap& m, const hull::Hydrostatics& hs) {
+  hull::MassProperties p;
+  p.mass_kg = m.Number("mass_kg", hs.displacement_kg);
+  if (!(p.mass_kg > 0.0)) m.Fail("mass_kg", "must be > 0");
+  p.lcg_m_from_ap = m.Number("lcg_m_from_ap", hs.lcb_m_from_ap);
+  const double x0 = hs.x_ap_m, x1 = hs.x_ap_m + hs.L_m;
+  if (p.lcg_m_from_ap < x0 || p.lcg_m_from_ap > x1) {
+    std::ostringstream os;
+    os << "must lie on the waterline length, between " << x0 << " and " << x1 << " m from the AP";
+    m.Fail("lcg_m_from_ap", os.str());
+  }
+  p.kyy_m = m.Number("kyy_m", 0.25 * hs.L_m);
+  if (!(p.kyy_m > 0.0)) m.Fail("kyy_m", "must be > 0 (typically 0.25 L)");
+  p.kg_m = m.Number("kg_m", hs.T_m);
+  m.Finish();
+  return p;
+}
+
+}  // namespace hullopt::io

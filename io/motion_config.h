@@ -1,0 +1,48 @@
+#pragma once
+// The `solver:` and `mass:` sections of a config (ARCHITECTURE §4) for `hullopt rao` and the commands that
+// compute RAOs.
+//
+// solver:
+//   method: time_domain_strip        # | strip_theory_stf
+//   sections: 40                     # strip steps along the hull (>= 2)
+//   panels: 14                       # panels per wetted section of one body (even, >= 4)
+//   Cs: 0.024                        # sectional damping coefficient (>= 0)
+//   hydrodynamic_fraction: 0.2       # time marching: weight of the hydrodynamic acceleration (0 < w <= 1)
+//   path: periodic                   # | time_marching
+//   interaction: true                # multihull bodies share the strips (false: one demihull alone)
+//   frequencies: { lambda_over_L: [0.6, 0.8, 1.0] }   # or omega_rad_s / omega_e_rad_s lists, or
+//                { range: { quantity: omega_e_rad_s, from: 2.0, to: 12.0, count: 60 } }
+// mass:                              # defaults from the hull's hydrostatics
+//   mass_kg: 87.07                   # default: displacement
+//   lcg_m_from_ap: 1.41              # default: LCB
+//   kyy_m: 0.782                     # default: 0.25 L
+//   kg_m: 0.34                       # default: the draught (not used by heave/pitch)
+#include <string>
+
+#include "io/yaml_map.h"
+#include "parametric_hull/hull_form.h"
+#include "parametric_hull/hydrostatics.h"
+#include "seakeeping/frequency_list.h"
+
+namespace hullopt::io {
+
+struct SolverConfig {
+  std::string method = "time_domain_strip";  ///< time_domain_strip | strip_theory_stf
+  int sections = 40;
+  int panels = 14;
+  double cs = 0.0;                     ///< Cs [-]
+  double hydrodynamic_fraction = 0.2;  ///< [-]
+  std::string path = "periodic";       ///< periodic | time_marching
+  bool interaction = true;
+  sk::FrequencySpec frequencies;
+};
+
+/// Reads and validates `solver` (consumes its keys; call solver.Finish() afterwards or let this do it).
+/// Throws InputError "file:line: key 'solver.x' = v: rule".
+SolverConfig ParseSolverConfig(YamlMap& solver);
+
+/// Reads `mass` with defaults from the hydrostatics (recorded in the resolved config). Throws InputError for
+/// non-positive mass or radius of gyration, or an LCG outside the hull's length.
+hull::MassProperties ParseMassConfig(YamlMap& mass, const hull::Hydrostatics& hs);
+
+}  // namespace hullopt::io

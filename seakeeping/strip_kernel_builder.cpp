@@ -1,0 +1,56 @@
+#include "seakeeping/strip_kernel_builder.h"
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+namespace hullopt::sk {
+
+StripKernel BuildStripKernel(const StripOperators& ops, const std::vector<double>& x_m) {
+  const int N = ops.Steps();
+  if (static_cast<int>(x_m.size()) != N)
+    throw std::invalid_argument("strip kernel: x_m has " + std::to_string(x_m.size()) + " stations for " +
+                                std::to_string(N) + " steps");
+  StripKernel K;
+  K.dt_s = ops.Dt();
+  K.dx_m = N > 1 ? std::fabs(x_m[1] - x_m[0]) : 0.0;
+  K.speed_m_s = K.dx_m / K.dt_s;
+  K.rho_kg_m3 = ops.Rho();
+  K.g_m_s2 = ops.G();
+  K.x_m = x_m;
+  K.panels.resize(N);
+  for (int n = 0; n < N; ++n) K.panels[n] = ops.PanelsAt(n);
+  K.force.resize(N);
+  for (int n = 0; n < N; ++n) K.force[n].resize(n + 1);
+  // Column by column (input step m): propagate the source responses forward in n.
+  for (int m = 0; m < N; ++m) {
+    const int Pm = ops.PanelCount(m);
+    std::vector<Eigen::MatrixXd> S(N);  // S[n] = ∂σ_n/∂V_m, n >= m
+    std::vector<Eigen::RowVectorXd> J(N);
+    for (int n = m; n < N; ++n) {
+      const int Pn = ops.PanelCount(n);
+      Eigen::MatrixXd rhs = Eigen::MatrixXd::Zero(Pn, Pm);
+      Eigen::RowVectorXd j = Eigen::RowVectorXd::Zero(Pm);
+      if (n == m) rhs.setIdentity();
+      for (int k = m; k < n; ++k) {
+        if (ops.PanelCount(k) == 0) continue;
+        if (Pn > 0) rhs.noalias() += ops.Memory(n, k) * S[k];
+        j.noalias() += ops.MomentumMemory(n, k) * S[k];
+      }
+      S[n] = Pn > 0 ? ops.Solve(n, rhs) : Eigen::MatrixXd(0, Pm);
+      if (Pn > 0) j.noalias() += ops.MomentumCurrent(n) * S[n];
+      J[n] = j;
+      auto at = [&](int k) { return k >= m ? J[k] : Eigen::RowVectorXd(Eigen::RowVectorXd::Zero(Pm)); };
+      K.force[n][m] = (3.0 * J[n] - 4.0 * at(n - 1) + at(n - 2)) / (2.0 * ops.Dt());
+    }
+  }
+  return K;
+}
+
+StripKernel BuildStripKernel(const std::vector<std::vector<Panel>>& panels_per_step,
+                             const std::vector<double>& x_m, double dt, double rho, double g,
+                             const StripOperatorOptions& options) {
+  return BuildStripKernel(BuildStripOperators(panels_per_step, dt, rho, g, options), x_m);
+}
+
+}  // namespace hullopt::sk

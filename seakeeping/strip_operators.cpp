@@ -1,0 +1,260 @@
+#include "seakeeping/strip_operators.h"
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+#include <utility>
+
+#include "seakeeping/gauss_legendre.h"
+#include "seakeeping/memory_influence.h"
+#include "seakeeping/rankine_panel.h"
+#include "seakeeping/transient_green.h"
+
+namespace hullopt::sk {
+namespace {
+
+constexpr double kInv2Pi = 0.5 / M_PI;
+
+// Collocation points (panel mid-points, where the body condition holds) and the field quadrature of ∫φ n_z
+// dl.
+struct FieldSet {
+  std::vector<double> cy, cz, ny, nz;  // per panel
+  std::vector<double> qy, qz, wnz;     // per quadrature point: position and weight · n_z [m]
+};
+
+FieldSet MakeFieldSet(const std::vector<Panel>& panels, int points_per_panel) {
+  FieldSet f;
+  const auto& rule = GaussLegendre01(points_per_panel);
+  for (const Panel& p : panels) {
+    const auto n = p.Normal();
+    f.cy.push_back(p.MidY()), f.cz.push_back(p.MidZ()), f.ny.push_back(n[0]), f.nz.push_back(n[1]);
+    const double L = p.Length();
+    for (int k = 0; k < points_per_panel; ++k) {
+      const double u = rule.nodes[k];
+      f.qy.push_back(p.y1 + u * (p.y2 - p.y1));
+      f.qz.push_back(p.z1 + u * (p.z2 - p.z1));
+      f.wnz.push_back(rule.weights[k] * L * n[1]);
+    }
+  }
+  return f;
+}
+
+// Memory of the sources on `src` at one lag level s, to be differenced over an interval:
+// nv(i, j) = (1/2π) ∫_panel ∂H⁽⁻¹⁾/∂n_i ds (real part taken), pl(j) = −(ρ/2π) Σ_q wnz_q ∫_panel Re H⁽⁻¹⁾ ds.
+struct Level {
+  Eigen::MatrixXd nv;
+  Eigen::RowVectorXd pl;
+};
+
+Level ComputeLevel(const FieldSet& f, const std::vector<Panel>& src, double s, double g, double rho,
+                   double tol) {
+  const int nf = static_cast<int>(f.cy.size()), ns = static_cast<int>(src.size());
+  Level out{Eigen::MatrixXd::Zero(nf, ns), Eigen::RowVectorXd::Zero(ns)};
+  if (s == 0.0 || ns == 0) return out;
+  std::vector<std::complex<double>> h1(ns), h2(ns);
+  for (int i = 0; i < nf; ++i) {
+    auto H = [&](double qy, double qz) {
+      return TransientGreenTimeIntegral(f.cy[i] - qy, f.cz[i] + qz, s, g);
+    };
+    for (int j = 0; j < ns; ++j) {
+      const Panel& p = src[j];
+      // Adjacent panels of one contour share an end point: evaluate it once.
+      const bool shared = j > 0 && src[j - 1].y2 == p.y1 && src[j - 1].z2 == p.z1;
+      h1[j] = shared ? h2[j - 1] : H(p.y1, p.z1);
+      h2[j] = H(p.y2, p.z2);
+      out.nv(i, j) = MemoryNormalVelocityFromEnds(p, h1[j], h2[j], f.ny[i], f.nz[i]);
+    }
+  }
+  for (int j = 0; j < ns; ++j) {
+    double sum = 0;
+    for (std::size_t q = 0; q < f.qy.size(); ++q)
+      sum += f.wnz[q] * MemoryPotentialLevel(src[j], f.qy[q], f.qz[q], s, g, tol);
+    out.pl(j) = -rho * kInv2Pi * sum;
+  }
+  return out;
+}
+
+// Rankine system matrix A (with the +1/2 self term) and the Rankine part of the momentum row.
+void Rankine(const FieldSet& f, const std::vector<Panel>& panels, double rho, Eigen::MatrixXd* A,
+             Eigen::RowVectorXd* mom) {
+  const int n = static_cast<int>(panels.size());
+  A->resize(n, n);
+  mom->setZero(n);
+  for (int j = 0; j < n; ++j) {
+    for (int i = 0; i < n; ++i) {
+      const auto r = RankinePanelInfluence(panels[j], f.cy[i], f.cz[i]);
+      const auto m = ImagePanelInfluence(panels[j], f.cy[i], f.cz[i]);
+      (*A)(i, j) = f.ny[i] * (r.vy - m.vy) + f.nz[i] * (r.vz - m.vz);
+    }
+    double sum = 0;
+    for (std::size_t q = 0; q < f.qy.size(); ++q)
+      sum += f.wnz[q] * (RankinePanelInfluence(panels[j], f.qy[q], f.qz[q]).phi -
+                         ImagePanelInfluence(panels[j], f.qy[q], f.qz[q]).phi);
+    (*mom)(j) = rho * sum;
+  }
+}
+
+void CheckPanels(const std::vector<Panel>& panels, int step) {
+  for (std::size_t j = 0; j < panels.size(); ++j) {
+    const Panel& p = panels[j];
+    const std::string where = "step " + std::to_string(step) + " panel " + std::to_string(j);
+    if (!(std::isfinite(p.y1) && std::isfinite(p.z1) && std::isfinite(p.y2) && std::isfinite(p.z2)))
+      throw std::invalid_argument(where + ": non-finite coordinate");
+    if (p.z1 > 0.0 || p.z2 > 0.0)
+      throw std::invalid_argument(where + ": panel above the free surface (z > 0): z1 = " +
+                                  std::to_string(p.z1) + ", z2 = " + std::to_string(p.z2));
+    if (!(p.Length() > 0.0)) throw std::invalid_argument(where + ": zero-length panel");
+    if (p.MidZ() >= 0.0)
+      throw std::invalid_argument(where + ": collocation point on z = 0 (panel lies on the surface)");
+  }
+}
+
+void CheckScalars(double dt, double rho, double g, const StripOperatorOptions& options) {
+  std::string err;
+  if (!options.IsValid(&err)) throw std::invalid_argument(err);
+  if (!(dt > 0.0) || !std::isfinite(dt))
+    throw std::invalid_argument("time step dt must be > 0, got " + std::to_string(dt));
+  if (!(rho > 0.0)) throw std::invalid_argument("rho must be > 0, got " + std::to_string(rho));
+  if (!(g > 0.0)) throw std::invalid_argument("g must be > 0, got " + std::to_string(g));
+}
+
+}  // namespace
+
+bool StripOperatorOptions::IsValid(std::string* error) const {
+  auto fail = [&](const std::string& m) {
+    if (error) *error = m;
+    return false;
+  };
+  if (field_points_per_panel < 1 || field_points_per_panel > 16)
+    return fail("field_points_per_panel must be in 1..16, got " + std::to_string(field_points_per_panel));
+  if (!(potential_rel_tol > 0.0 && potential_rel_tol < 1e-3))
+    return fail("potential_rel_tol must be in (0, 1e-3), got " + std::to_string(potential_rel_tol));
+  return true;
+}
+
+const Eigen::MatrixXd& StripOperators::System(int n) const {
+  return system_[invariant_ ? (n == 0 ? 0 : 1) : n];
+}
+
+Eigen::MatrixXd StripOperators::Solve(int n, const Eigen::MatrixXd& rhs) const {
+  if (rhs.size() == 0) return rhs;
+  return lu_[invariant_ ? (n == 0 ? 0 : 1) : n].solve(rhs);
+}
+
+const Eigen::MatrixXd& StripOperators::Memory(int n, int k) const {
+  if (!invariant_) return memory_[n][k];
+  return k == 0 ? memory_[1][n] : memory_[0][n - k];
+}
+
+const Eigen::RowVectorXd& StripOperators::MomentumCurrent(int n) const {
+  return momentum_current_[invariant_ ? (n == 0 ? 0 : 1) : n];
+}
+
+const Eigen::RowVectorXd& StripOperators::MomentumMemory(int n, int k) const {
+  if (!invariant_) return momentum_memory_[n][k];
+  return k == 0 ? momentum_memory_[1][n] : momentum_memory_[0][n - k];
+}
+
+const Eigen::MatrixXd& StripOperators::LagMemory(int l) const {
+  if (!invariant_ || l < 1 || l >= steps_)
+    throw std::out_of_range("LagMemory: needs time-invariant operators, 1 <= l < steps");
+  return memory_[0][l];
+}
+
+const Eigen::RowVectorXd& StripOperators::LagMomentum(int l) const {
+  if (!invariant_ || l < 1 || l >= steps_)
+    throw std::out_of_range("LagMomentum: needs time-invariant operators, 1 <= l < steps");
+  return momentum_memory_[0][l];
+}
+
+StripOperators BuildStripOperators(const std::vector<std::vector<Panel>>& panels_per_step, double dt,
+                                   double rho, double g, const StripOperatorOptions& options) {
+  CheckScalars(dt, rho, g, options);
+  const int N = static_cast<int>(panels_per_step.size());
+  for (int n = 0; n < N; ++n) CheckPanels(panels_per_step[n], n);
+  StripOperators ops;
+  ops.steps_ = N, ops.dt_ = dt, ops.rho_ = rho, ops.g_ = g, ops.invariant_ = false;
+  ops.panels_ = panels_per_step;
+  ops.system_.resize(N);
+  ops.lu_.resize(N);
+  ops.momentum_current_.resize(N);
+  ops.memory_.resize(N);
+  ops.momentum_memory_.resize(N);
+  // Each n is independent and computed by one thread in a fixed order: bitwise identical for any thread
+  // count.
+#pragma omp parallel for schedule(dynamic, 1)
+  for (int n = N - 1; n >= 0; --n) {  // largest work first
+    const auto& P = panels_per_step[n];
+    const FieldSet f = MakeFieldSet(P, options.field_points_per_panel);
+    Eigen::MatrixXd A;
+    Eigen::RowVectorXd mom;
+    Rankine(f, P, rho, &A, &mom);
+    ops.memory_[n].resize(n);
+    ops.momentum_memory_[n].resize(n);
+    for (int k = 0; k <= n; ++k) {
+      // Lags of interval k seen at t_n: [max(0, t_k − dt/2), t_k + dt/2] (k < n), [t_n − dt/2, t_n] (k = n).
+      double s1, s2;
+      if (k == n) {
+        if (n == 0) break;
+        s1 = 0.0, s2 = 0.5 * dt;
+      } else {
+        s1 = (n - k - 0.5) * dt;
+        s2 = k == 0 ? n * dt : (n - k + 0.5) * dt;
+      }
+      const Level a = ComputeLevel(f, panels_per_step[k], s1, g, rho, options.potential_rel_tol);
+      const Level b = ComputeLevel(f, panels_per_step[k], s2, g, rho, options.potential_rel_tol);
+      if (k == n) {
+        A -= b.nv - a.nv;
+        mom += b.pl - a.pl;
+      } else {
+        ops.memory_[n][k] = b.nv - a.nv;
+        ops.momentum_memory_[n][k] = b.pl - a.pl;
+      }
+    }
+    ops.system_[n] = A;
+    if (A.rows() > 0) ops.lu_[n].compute(A);
+    ops.momentum_current_[n] = mom;
+  }
+  return ops;
+}
+
+StripOperators BuildFixedSectionOperators(const std::vector<Panel>& panels, int steps, double dt, double rho,
+                                          double g, const StripOperatorOptions& options) {
+  CheckScalars(dt, rho, g, options);
+  CheckPanels(panels, 0);
+  if (steps < 1) throw std::invalid_argument("steps must be >= 1, got " + std::to_string(steps));
+  if (panels.empty()) throw std::invalid_argument("fixed section has no panels");
+  const int N = steps;
+  StripOperators ops;
+  ops.steps_ = N, ops.dt_ = dt, ops.rho_ = rho, ops.g_ = g, ops.invariant_ = true;
+  ops.panels_ = {panels};
+  const FieldSet f = MakeFieldSet(panels, options.field_points_per_panel);
+  // Levels: half[m] at (m + ½)dt, m = 0..N−1; whole[n] at n·dt, n = 1..N−1.
+  std::vector<Level> half(N), whole(N);
+#pragma omp parallel for schedule(dynamic, 1)
+  for (int job = 0; job < 2 * N - 1; ++job) {
+    if (job < N)
+      half[job] = ComputeLevel(f, panels, (job + 0.5) * dt, g, rho, options.potential_rel_tol);
+    else
+      whole[job - N + 1] = ComputeLevel(f, panels, (job - N + 1) * dt, g, rho, options.potential_rel_tol);
+  }
+  Eigen::MatrixXd A;
+  Eigen::RowVectorXd mom;
+  Rankine(f, panels, rho, &A, &mom);
+  ops.system_ = {A, A - half[0].nv};
+  ops.lu_.resize(2);
+  ops.lu_[0].compute(ops.system_[0]);
+  ops.lu_[1].compute(ops.system_[1]);
+  ops.momentum_current_ = {mom, mom + half[0].pl};
+  ops.memory_.assign(2, std::vector<Eigen::MatrixXd>(N));
+  ops.momentum_memory_.assign(2, std::vector<Eigen::RowVectorXd>(N));
+  for (int l = 1; l < N; ++l) {
+    ops.memory_[0][l] = half[l].nv - half[l - 1].nv;
+    ops.momentum_memory_[0][l] = half[l].pl - half[l - 1].pl;
+    ops.memory_[1][l] = whole[l].nv - half[l - 1].nv;
+    ops.momentum_memory_[1][l] = whole[l].pl - half[l - 1].pl;
+  }
+  return ops;
+}
+
+}  // namespace hullopt::sk

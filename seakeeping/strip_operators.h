@@ -1,0 +1,92 @@
+#pragma once
+// Frequency-independent operators of one 2D water strip in the time domain (ARCHITECTURE §5, part (a)).
+//
+// Model (theory notes §1.2, §1.6). At step n (t_n = n·dt) the strip holds the panels P_n (all bodies sharing
+// the strip: catamaran demihulls, SWATH struts, outriggers). Panel j of step k carries a source density
+// σ_{k,j} [m/s], constant on the panel and over the time interval [max(0, t_k − dt/2), t_k + dt/2] (cut at
+// t_n for k = n): past sources sit on past panels. The potential is
+//   φ(p, t_n) = Σ_j σ_{n,j} R_j(p) − Σ_{k<=n} Σ_j σ_{k,j} (1/2π) ∫_interval ∫_{panel k,j} G~(p, q, t_n − τ)
+//   ds dτ,
+// R_j = (1/2π)∫(ln r − ln r') ds the Rankine pair. The body condition ∂φ/∂n = V at the collocation points
+// (panel mid-points) of step n reads
+//   System(n) σ_n = V_n + Σ_{k<n} Memory(n, k) σ_k,
+// System(n) = A_n − M_{n,n} (A_n: Rankine normal velocity incl. the +1/2 self term; M_{n,n}: the memory of
+// the current sources over [t_n − dt/2, t_n]), Memory(n, k) = (1/2π)∫∫ ∂G~/∂n over interval k (exact in space
+// and time, theory notes §1.6). The vertical momentum of the strip's disturbance flow,
+//   I_n = ρ ∫_{S_n} φ n_z dl = MomentumCurrent(n) σ_n + Σ_{k<n} MomentumMemory(n, k) σ_k   [kg/s],
+// gives the sectional force f = dI/dt (n into the fluid), see strip_marcher.h and docs/theory.md.
+#include <Eigen/Dense>
+#include <string>
+#include <vector>
+
+#include "seakeeping/panel.h"
+
+namespace hullopt::sk {
+
+struct StripOperatorOptions {
+  /// Gauss points per body panel for the momentum integral ∫φ n_z dl (1 = panel mid-points).
+  int field_points_per_panel = 2;
+  /// Relative tolerance of the adaptive panel quadrature of the memory potential.
+  double potential_rel_tol = 1e-8;
+  bool IsValid(std::string* error) const;
+};
+
+class StripOperators {
+ public:
+  int Steps() const { return steps_; }
+  double Dt() const { return dt_; }
+  double Rho() const { return rho_; }
+  double G() const { return g_; }
+  /// True when built for a section that does not change (then Memory depends on n − k only).
+  bool TimeInvariant() const { return invariant_; }
+  const std::vector<Panel>& PanelsAt(int n) const { return panels_[invariant_ ? 0 : n]; }
+  int PanelCount(int n) const { return static_cast<int>(PanelsAt(n).size()); }
+
+  /// A_n − M_{n,n} [-] (P_n × P_n).
+  const Eigen::MatrixXd& System(int n) const;
+  /// Solves System(n) σ = rhs (stored LU).
+  Eigen::MatrixXd Solve(int n, const Eigen::MatrixXd& rhs) const;
+  /// Memory normal velocity at the collocation points of step n per unit σ of step k < n [-] (P_n × P_k).
+  const Eigen::MatrixXd& Memory(int n, int k) const;
+  /// Row vectors of I_n [kg/s per (m/s) of σ = kg/m]: the current sources and the sources of step k < n.
+  const Eigen::RowVectorXd& MomentumCurrent(int n) const;
+  const Eigen::RowVectorXd& MomentumMemory(int n, int k) const;
+
+  /// Time-invariant operators only: memory over a FULL interval centred at lag l·dt (l >= 1), the
+  /// steady-state form used for frequency responses. Valid for 1 <= l < Steps().
+  const Eigen::MatrixXd& LagMemory(int l) const;
+  const Eigen::RowVectorXd& LagMomentum(int l) const;
+
+ private:
+  friend StripOperators BuildStripOperators(const std::vector<std::vector<Panel>>&, double, double, double,
+                                            const StripOperatorOptions&);
+  friend StripOperators BuildFixedSectionOperators(const std::vector<Panel>&, int, double, double, double,
+                                                   const StripOperatorOptions&);
+  int steps_ = 0;
+  double dt_ = 0, rho_ = 0, g_ = 0;
+  bool invariant_ = false;
+  std::vector<std::vector<Panel>> panels_;
+  // General: index n (system, lu, momentum_current), [n][k] (memory, momentum_memory).
+  // Time-invariant: system/lu/momentum_current [0] for n = 0 (no self memory) and [1] for n >= 1;
+  // memory/momentum_memory [0][l] full interval at lag l, [1][n] the first half interval [0, dt/2] seen at
+  // t_n.
+  std::vector<Eigen::MatrixXd> system_;
+  std::vector<Eigen::PartialPivLU<Eigen::MatrixXd>> lu_;
+  std::vector<Eigen::RowVectorXd> momentum_current_;
+  std::vector<std::vector<Eigen::MatrixXd>> memory_;
+  std::vector<std::vector<Eigen::RowVectorXd>> momentum_memory_;
+};
+
+/// Operators for a sequence of panel sets (one per step; a step may hold several bodies, and may be empty),
+/// time step dt [s], water density rho [kg/m³], gravity g [m/s²]. Cost O(N² P² ·quadrature); OpenMP-parallel
+/// over n, bitwise identical results for any thread count. Throws std::invalid_argument on bad input (panel
+/// above z = 0, zero-length panel, dt/rho/g not positive, invalid options).
+StripOperators BuildStripOperators(const std::vector<std::vector<Panel>>& panels_per_step, double dt,
+                                   double rho, double g, const StripOperatorOptions& options = {});
+
+/// Operators of a section that does not change, for `steps` steps (memory by lag only; cost O(N
+/// P²·quadrature)).
+StripOperators BuildFixedSectionOperators(const std::vector<Panel>& panels, int steps, double dt, double rho,
+                                          double g, const StripOperatorOptions& options = {});
+
+}  // namespace hullopt::sk

@@ -1,0 +1,48 @@
+#!/usr/bin/env bash
+# hullopt rao end to end: rao.csv with the contract header, and one-line errors with a non-zero exit for bad
+# input (zero or negative speed, empty or negative frequency list, unknown key).
+set -u
+bin="$1"
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+fail() { echo "FAIL: $*"; exit 1; }
+
+base() {  # $1: speed block, $2: frequencies block
+  cat <<YAML
+hull: { offsets_csv: data/delft372/delft372_offsets.csv, draught_m: 0.15, length_m: 3.0, hulls: 2, spacing_m: 0.70 }
+mass: { mass_kg: 87.07, lcg_m_from_ap: 1.41, kyy_m: 0.782 }
+speed: $1
+water: { rho_kg_m3: 1000 }
+solver: { kernel: impulsive, sections: 20, panels: 8, Cs: 0.024, frequencies: $2 }
+YAML
+}
+
+base "{ Fn: 0.75 }" "{ lambda_over_L: [1.0, 1.5, 2.0] }" > "$tmp/ok.yaml"
+"$bin" rao "$tmp/ok.yaml" --out "$tmp/ok" || fail "good config refused"
+header=$(grep -v '^#' "$tmp/ok/rao.csv" | head -1)
+[ "$header" = "omega_e_rad_s,omega_rad_s,lambda_over_L,heave_amp,heave_phase_deg,pitch_amp,pitch_phase_deg" ] ||
+  fail "rao.csv header: $header"
+[ "$(grep -v '^#' "$tmp/ok/rao.csv" | wc -l)" = 4 ] || fail "rao.csv should have 3 rows"
+grep -qi nan "$tmp/ok/rao.csv" && fail "NaN in rao.csv"
+[ -s "$tmp/ok/rao.svg" ] || fail "no rao.svg"
+[ -s "$tmp/ok/config.resolved.yaml" ] || fail "no config.resolved.yaml"
+
+expect_error() {  # $1: name, $2: config text, $3: text the message must contain
+  echo "$2" > "$tmp/$1.yaml"
+  if "$bin" rao "$tmp/$1.yaml" --out "$tmp/$1" 2> "$tmp/$1.err"; then fail "$1: accepted"; fi
+  grep -q "hullopt: error:" "$tmp/$1.err" || fail "$1: not a clean error: $(cat "$tmp/$1.err")"
+  grep -q "$3" "$tmp/$1.err" || fail "$1: message lacks '$3': $(cat "$tmp/$1.err")"
+  [ "$(wc -l < "$tmp/$1.err")" = 1 ] || fail "$1: error is not one line"
+}
+expect_error zero_speed "$(base "{ Fn: 0 }" "{ omega_rad_s: [2.0] }")" "speed.Fn"
+expect_error negative_speed "$(base "{ m_s: -2 }" "{ omega_rad_s: [2.0] }")" "speed.m_s"
+expect_error empty_list "$(base "{ Fn: 0.75 }" "{ omega_rad_s: [] }")" "omega_rad_s"
+expect_error negative_freq "$(base "{ Fn: 0.75 }" "{ omega_e_rad_s: [2.0, -1.0] }")" "> 0"
+expect_error unknown_key "$(base "{ Fn: 0.75 }" "{ omega_rad_s: [2.0] }")
+extra_key: 1" "extra_key"
+# A hull whose sections stop below the draught (deck edge under water): named body and station.
+printf 'x_m,y_m,z_m\n0,0,0\n0,0.5,0.1\n1,0,0\n1,0.5,0.1\n2,0,0\n2,0.5,0.1\n' > "$tmp/low.csv"
+expect_error low_deck "hull: { offsets_csv: $tmp/low.csv, draught_m: 0.2 }
+speed: { m_s: 2.0 }
+solver: { kernel: impulsive, sections: 10, panels: 6, frequencies: { omega_rad_s: [2.0] } }" "does not reach the waterline"
+echo "rao CLI: all checks passed"

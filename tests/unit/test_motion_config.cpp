@@ -1,0 +1,76 @@
+// solver: and mass: config sections: defaults, frequency forms, and one-line errors naming key and rule.
+#include <catch2/catch.hpp>
+
+#include "io/motion_config.h"
+
+using hullopt::io::InputError;
+using hullopt::io::YamlMap;
+
+namespace {
+YamlMap FromText(const std::string& text) {
+  return YamlMap(YAML::Load(text), "solver", "test.yaml", YAML::Node(YAML::NodeType::Map));
+}
+hullopt::hull::Hydrostatics Hs() {
+  hullopt::hull::Hydrostatics h;
+  h.L_m = 3.0;
+  h.T_m = 0.15;
+  h.displacement_kg = 87.0;
+  h.lcb_m_from_ap = 1.416;
+  h.x_ap_m = 0.0;
+  return h;
+}
+}  // namespace
+
+TEST_CASE("solver section with defaults and a lambda/L list", "[config]") {
+  auto m = FromText("Cs: 0.024\nfrequencies: { lambda_over_L: [1.0, 1.5, 2.0] }\n");
+  const auto c = hullopt::io::ParseSolverConfig(m);
+  CHECK(c.method == "time_domain_strip");
+  CHECK(c.sections == 40);
+  CHECK(c.panels == 14);
+  CHECK(c.cs == 0.024);
+  CHECK(c.hydrodynamic_fraction == 0.2);
+  CHECK(c.path == "periodic");
+  CHECK(c.frequencies.quantity == hullopt::sk::FrequencySpec::Quantity::kLambdaOverL);
+  CHECK(c.frequencies.values.size() == 3);
+  CHECK(m.resolved()["sections"].as<int>() == 40);
+}
+
+TEST_CASE("solver frequency range", "[config]") {
+  auto m = FromText("frequencies: { range: { quantity: omega_e_rad_s, from: 2, to: 12, count: 60 } }\n");
+  const auto c = hullopt::io::ParseSolverConfig(m);
+  CHECK(c.frequencies.values.size() == 60);
+  CHECK(c.frequencies.values.back() == Approx(12.0));
+}
+
+TEST_CASE("bad solver and mass input: one clear error each", "[config][errors]") {
+  auto bad = [](const std::string& text) {
+    auto m = FromText(text);
+    hullopt::io::ParseSolverConfig(m);
+  };
+  CHECK_THROWS_WITH(bad("frequencies: { omega_e_rad_s: [] }\n"), Catch::Contains("omega_e_rad_s"));
+  CHECK_THROWS_WITH(bad("frequencies: { omega_rad_s: [1.0, -2.0] }\n"),
+                    Catch::Contains("solver.frequencies.omega_rad_s") && Catch::Contains("> 0"));
+  CHECK_THROWS_WITH(bad("Cs: -0.1\nfrequencies: { omega_rad_s: [1.0] }\n"), Catch::Contains("solver.Cs"));
+  CHECK_THROWS_WITH(bad("hydrodynamic_fraction: 0\nfrequencies: { omega_rad_s: [1.0] }\n"),
+                    Catch::Contains("hydrodynamic_fraction"));
+  CHECK_THROWS_WITH(bad("panels: 13\nfrequencies: { omega_rad_s: [1.0] }\n"),
+                    Catch::Contains("solver.panels"));
+  CHECK_THROWS_WITH(bad("frequencies: { omega_rad_s: [1.0], lambda_over_L: [1.0] }\n"),
+                    Catch::Contains("exactly one"));
+  CHECK_THROWS_WITH(bad("path: sideways\nfrequencies: { omega_rad_s: [1.0] }\n"),
+                    Catch::Contains("solver.path"));
+  CHECK_THROWS_WITH(bad("frequencies: { omega_rad_s: [1.0] }\nCss: 1\n"), Catch::Contains("Css"));
+  CHECK_THROWS_AS(bad("Cs: 0.1\n"), InputError);  // frequencies are required
+
+  auto mass = [](const std::string& text) {
+    auto m = FromText(text);
+    return hullopt::io::ParseMassConfig(m, Hs());
+  };
+  const auto d = mass("{}");
+  CHECK(d.mass_kg == 87.0);
+  CHECK(d.lcg_m_from_ap == 1.416);
+  CHECK(d.kyy_m == Approx(0.75));
+  CHECK_THROWS_WITH(mass("mass_kg: 0\n"), Catch::Contains("mass_kg"));
+  CHECK_THROWS_WITH(mass("kyy_m: -1\n"), Catch::Contains("kyy_m"));
+  CHECK_THROWS_WITH(mass("lcg_m_from_ap: 5\n"), Catch::Contains("lcg_m_from_ap"));
+}

@@ -1,0 +1,247 @@
+// Frequency-domain 2D panel solver (seakeeping/frequency_domain_section.h) against independent results:
+//  - heaving semicircle: Ursell's (1949) multipole solution, a source plus wave-free multipoles
+//      (a/r)^{2m} [cos 2mθ + νr/(2m−1) cos(2m−1)θ]  (F. Ursell, "On the heaving motion of a circular cylinder
+//      on the surface of a fluid", Q. J. Mech. Appl. Math. 2 (1949) 218–231), solved here by least squares on
+//      the exact circle — no panels, no lid, no panel quadrature; it shares only the Green function of a
+//      point source, which tests/unit/test_frequency_domain_green.cpp checks against its integral definition;
+//  - the infinite-frequency limit a33 → ρπR²/2 of the semicircle (the image of a translating circle);
+//  - energy balance: damping against the radiated wave amplitude far away, b33 = ρg²(|A+|² + |A−|²)/(2ω³);
+//  - Haskind: exciting force from the diffraction solution against the one from the radiation potential;
+//  - irregular frequencies: the lid removes the spurious peak of a rectangle at its first irregular
+//  frequency;
+//  - panel convergence 14, 28, 56 (printed) and two semicircles side by side (symmetric, finite).
+#include <Eigen/Dense>
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <complex>
+#include <cstdio>
+
+#include "seakeeping/frequency_domain_green.h"
+#include "seakeeping/frequency_domain_section.h"
+#include "seakeeping/section_shapes.h"
+
+using namespace hullopt::sk;
+using C = std::complex<double>;
+
+namespace {
+
+constexpr double kRho = 1000.0, kG = 9.81, kR = 1.0;
+const double kM0 = kRho * M_PI * kR * kR / 2;  // ρπR²/2 [kg/m]
+
+FrequencyDomainOptions Options() {
+  FrequencyDomainOptions o;
+  o.rho_kg_m3 = kRho;
+  o.g_m_s2 = kG;
+  return o;
+}
+
+std::vector<Panel> Semicircle(int n) { return PanelSymmetricSection(SemicircleContour(kR, 4000), n); }
+
+struct Coefficients {
+  double a, b;  // a33/(ρπR²/2), b33/(ρπR²ω/2)
+};
+
+Coefficients Panels(int n, double nuR) {
+  const double w = std::sqrt(nuR * kG / kR);
+  const auto h = SolveSectionFrequencyDomain({Semicircle(n)}, w, Options());
+  return {h.a33() / kM0, h.b33() / (kM0 * w)};
+}
+
+// Ursell's multipole solution for the heaving semicircle, unit heave velocity, time factor e^{iωt}. θ from
+// the downward vertical, ζ = d + iy with depth d = −z: r^{−n} cos nθ = Re ζ^{−n}.
+Coefficients Ursell(double nuR, int multipoles = 14, int collocation = 60) {
+  const double nu = nuR / kR;
+  const int nu_unknowns = multipoles + 1;
+  // Basis function k at (y, z): value and ∂/∂r.
+  auto basis = [&](int k, double y, double z, C* value, C* d_dr) {
+    if (k == 0) {
+      const auto g = PulsatingSourceGreen(nu, y, z, 0.0, 0.0);  // outgoing source at the origin (inside)
+      *value = g.value;
+      *d_dr = (y * g.dy + z * g.dz) / std::hypot(y, z);
+      return;
+    }
+    const int m = k;
+    const C zeta(-z, y);
+    const double a2m = std::pow(kR, 2 * m);
+    const double c = nu * a2m / (2 * m - 1);
+    const C F = a2m * std::pow(zeta, -2 * m) + c * std::pow(zeta, -(2 * m - 1));
+    const C dF = -2.0 * m * a2m * std::pow(zeta, -2 * m - 1) - (2.0 * m - 1) * c * std::pow(zeta, -2 * m);
+    // Re F: ∂/∂d = Re F', ∂/∂y = −Im F'; ∂/∂z = −∂/∂d.
+    const double ddd = dF.real(), ddy = -dF.imag();
+    *value = F.real();
+    const double r = std::hypot(y, z);
+    *d_dr = (y * ddy + z * (-ddd)) / r;
+  };
+  Eigen::MatrixXcd A(collocation, nu_unknowns);
+  Eigen::VectorXcd rhs(collocation);
+  for (int i = 0; i < collocation; ++i) {
+    const double th = 0.5 * M_PI * (i + 0.5) / collocation;
+    const double y = kR * std::sin(th), z = -kR * std::cos(th);
+    for (int k = 0; k < nu_unknowns; ++k) {
+      C v, dr;
+      basis(k, y, z, &v, &dr);
+      A(i, k) = dr;
+    }
+    rhs(i) = -std::cos(th);  // ∂φ/∂r = n_z (normal into the fluid = radial)
+  }
+  const Eigen::VectorXcd c = A.colPivHouseholderQr().solve(rhs);
+  // ∫ ψ n_z ds over the whole semicircle = 2 ∫_0^{π/2} ψ(R, θ)(−cos θ) R dθ (midpoint rule, 4000 points).
+  C integral = 0.0;
+  const int nq = 4000;
+  for (int i = 0; i < nq; ++i) {
+    const double th = 0.5 * M_PI * (i + 0.5) / nq;
+    const double y = kR * std::sin(th), z = -kR * std::cos(th);
+    C psi = 0.0;
+    for (int k = 0; k < nu_unknowns; ++k) {
+      C v, dr;
+      basis(k, y, z, &v, &dr);
+      psi += c(k) * v;
+    }
+    integral += 2.0 * psi * (-std::cos(th)) * kR * (0.5 * M_PI / nq);
+  }
+  const double w = std::sqrt(nuR * kG / kR);
+  return {-kRho * integral.real() / kM0, kRho * w * integral.imag() / (kM0 * w)};
+}
+
+}  // namespace
+
+TEST_CASE("Ursell multipole reference is converged in the number of multipoles", "[fd][semicircle]") {
+  // Exponential convergence in the multipoles: 10 and 14 terms agree to 1e-4, two orders below the 1% used
+  // against the panel solver (this is the reference's own error).
+  constexpr double kTolReference = 1e-4;
+  for (double nuR : {0.1, 0.5, 1.0, 2.0}) {
+    const Coefficients a = Ursell(nuR, 10), b = Ursell(nuR, 14);
+    CHECK(std::fabs(a.a - b.a) < kTolReference);
+    CHECK(std::fabs(a.b - b.b) < kTolReference);
+  }
+}
+
+TEST_CASE("heaving semicircle: panel solver converges to Ursell's multipole solution", "[fd][semicircle]") {
+  // Constant-strength flat panels with midpoint collocation converge at first order in the panel size here
+  // (the missing self-curvature term of each panel; the same O(1/N) is seen in the pure Rankine
+  // infinite-frequency problem), so compare the Richardson extrapolation 2·X(112) − X(56) within 1% of the
+  // curve's scale, and the 56-panel result within 3.5%.
+  constexpr double kTolExtrapolated = 0.01;
+  constexpr double kTol56 = 0.035;
+  std::printf(
+      "semicircle heave: nuR, a33/(rho pi R^2/2) and b33/(rho pi R^2 omega/2): Ursell | 14 28 56 panels\n");
+  for (double nuR : {0.1, 0.25, 0.5, 1.0, 1.5, 2.0}) {
+    const Coefficients u = Ursell(nuR);
+    const Coefficients p14 = Panels(14, nuR), p28 = Panels(28, nuR), p56 = Panels(56, nuR),
+                       p112 = Panels(112, nuR);
+    std::printf("  %4.2f  a %.4f | %.4f %.4f %.4f (112: %.4f)   b %.4f | %.4f %.4f %.4f (112: %.4f)\n", nuR,
+                u.a, p14.a, p28.a, p56.a, p112.a, u.b, p14.b, p28.b, p56.b, p112.b);
+    INFO("nuR = " << nuR);
+    // Scale: the larger of the local value and the damping curve's peak order (≈ 1 for both).
+    CHECK(std::fabs(2 * p112.a - p56.a - u.a) <= kTolExtrapolated * std::max(1.0, u.a));
+    CHECK(std::fabs(2 * p112.b - p56.b - u.b) <= kTolExtrapolated * std::max(1.0, u.b));
+    CHECK(std::fabs(p56.a - u.a) <= kTol56 * std::max(1.0, u.a));
+    CHECK(std::fabs(p56.b - u.b) <= kTol56 * std::max(1.0, u.b));
+  }
+}
+
+TEST_CASE("semicircle high-frequency added mass tends to rho pi R^2 / 2", "[fd][semicircle]") {
+  // At νR = 200 the finite-frequency correction is O(1/(νR)) ≈ 0.5%; with 112 panels the O(1/N) panel error
+  // is ≈ 0.6% (Rankine check), so 1% is the brief's tolerance and is met without extrapolation at 112 panels.
+  constexpr double kTolHighFrequency = 0.01;
+  const Coefficients p = Panels(112, 200.0);
+  std::printf("semicircle nuR = 200, 112 panels: a33/(rho pi R^2/2) = %.4f\n", p.a);
+  CHECK(std::fabs(p.a - 1.0) <= kTolHighFrequency);
+}
+
+TEST_CASE("energy balance and Haskind relation hold", "[fd][semicircle]") {
+  // Far-field amplitude and pressure integral come from the same sources by different operations; their
+  // mismatch is a discretisation error that halves with the panel size (≈ 1% at 56 panels), so 2%.
+  constexpr double kTolEnergy = 0.02;
+  // Exciting force from the diffraction problem against the Haskind form (radiation potential only): two
+  // different boundary-value problems; 2% of the Froude–Krylov scale ρgB.
+  constexpr double kTolHaskind = 0.02;
+  const auto panels = Semicircle(56);
+  for (double nuR : {0.2, 0.7, 1.3, 2.5}) {
+    const double w = std::sqrt(nuR * kG / kR);
+    const auto h = SolveSectionFrequencyDomain({panels}, w, Options());
+    const double b_far =
+        kRho * kG * kG * (std::norm(h.far_wave_plus[1]) + std::norm(h.far_wave_minus[1])) / (2 * w * w * w);
+    INFO("nuR = " << nuR << " b33 " << h.b33() << " from far field " << b_far);
+    CHECK(std::fabs(b_far / h.b33() - 1) <= kTolEnergy);
+    // Symmetric body: heave radiates equal waves both ways.
+    CHECK(std::abs(h.far_wave_plus[1]) == Approx(std::abs(h.far_wave_minus[1])).epsilon(1e-9));
+    const double scale = kRho * kG * 2 * kR;
+    CHECK(std::abs(h.exciting_force[1] - h.exciting_force_haskind[1]) <= kTolHaskind * scale);
+    // 2D Haskind–damping relation for a symmetric body: |F3/A| = sqrt(ρ g² b33 / ω), with F3 from
+    // diffraction.
+    const double f_from_damping = std::sqrt(kRho * kG * kG * h.b33() / w);
+    CHECK(std::fabs(std::abs(h.exciting_force[1]) / f_from_damping - 1) <= kTolEnergy);
+  }
+}
+
+TEST_CASE("long waves: heave exciting force tends to the hydrostatic rho g B", "[fd][semicircle]") {
+  // At νR = 0.002 the diffraction part is O(ν ln ν) and FK is ρgB(1 − O(νR)): 1% is ample.
+  constexpr double kTolLongWave = 0.01;
+  const double w = std::sqrt(0.002 * kG / kR);
+  const auto h = SolveSectionFrequencyDomain({Semicircle(28)}, w, Options());
+  CHECK(std::abs(h.exciting_force[1]) == Approx(kRho * kG * 2 * kR).epsilon(kTolLongWave));
+}
+
+TEST_CASE("the lid removes the irregular frequency of a rectangle", "[fd][irregular]") {
+  // Rectangle B = 2 m, T = 1 m: the interior Dirichlet eigenproblem has its first symmetric mode
+  // cos(πy/B) sinh(k(z+T)), k = π/B, at ν = k coth(kT), i.e. νB/2 = (π/2) coth(π/2) = 1.7126.
+  const double B = 2.0, T = 1.0;
+  const double k = M_PI / B;
+  const double nu_irr = k / std::tanh(k * T);
+  const auto panels = PanelSymmetricSection(RectangleContour(B, T), 40);
+  auto run = [&](double nu, int lid) {
+    FrequencyDomainOptions o = Options();
+    o.lid_panels = lid;
+    return SolveSectionFrequencyDomain({panels}, std::sqrt(nu * kG), o);
+  };
+  // With the lid: the value at the irregular frequency lies on the smooth curve through its neighbours (±3%);
+  // without: it does not. Smoothness measure: deviation from the mean of the two neighbours, relative.
+  const double d = 0.03 * nu_irr;
+  auto kink = [&](int lid) {
+    const double b0 = run(nu_irr, lid).b33(), bm = run(nu_irr - d, lid).b33(),
+                 bp = run(nu_irr + d, lid).b33();
+    return std::fabs(b0 - 0.5 * (bm + bp)) / std::fabs(b0);
+  };
+  const double with_lid = kink(-1), without_lid = kink(0);
+  std::printf(
+      "rectangle B/T = 2 at its first irregular frequency nuB/2 = %.4f: b33 kink with lid %.2e, without "
+      "%.2e\n",
+      nu_irr * B / 2, with_lid, without_lid);
+  // A smooth curve has a second difference of O(d²)·(curvature) ≈ 6e-3 relative here (measured with the lid);
+  // the unremoved irregular frequency gives O(1).
+  constexpr double kTolSmooth = 1e-2;
+  CHECK(with_lid < kTolSmooth);
+  CHECK(without_lid > 10 * kTolSmooth);
+}
+
+TEST_CASE("two semicircles side by side: symmetric, finite, different from twice one", "[fd][multihull]") {
+  const double spacing = 3.0 * kR;
+  const auto port = PanelSymmetricSection(SemicircleContour(kR, 4000), 28, +spacing / 2);
+  const auto stbd = PanelSymmetricSection(SemicircleContour(kR, 4000), 28, -spacing / 2);
+  const double w = std::sqrt(1.0 * kG / kR);
+  const auto two = SolveSectionFrequencyDomain({port, stbd}, w, Options());
+  const auto one = SolveSectionFrequencyDomain({Semicircle(28)}, w, Options());
+  CHECK(std::isfinite(two.a33()));
+  CHECK(two.b33() > 0);
+  CHECK(std::abs(two.far_wave_plus[1]) == Approx(std::abs(two.far_wave_minus[1])).epsilon(1e-9));
+  // Interaction at 3R spacing changes the pair's coefficients by more than 5% from twice a single hull.
+  CHECK(std::fabs(two.a33() / (2 * one.a33()) - 1) + std::fabs(two.b33() / (2 * one.b33()) - 1) > 0.05);
+  // Energy balance holds for the pair as well.
+  const double b_far =
+      kRho * kG * kG * (std::norm(two.far_wave_plus[1]) + std::norm(two.far_wave_minus[1])) / (2 * w * w * w);
+  CHECK(std::fabs(b_far / two.b33() - 1) <= 0.02);
+}
+
+TEST_CASE("options are validated", "[fd]") {
+  FrequencyDomainOptions o;
+  std::string e;
+  CHECK(o.IsValid(&e));
+  o.rho_kg_m3 = -1;
+  CHECK_FALSE(o.IsValid(&e));
+  CHECK(e.find("rho_kg_m3") != std::string::npos);
+  CHECK_THROWS_AS(SolveSectionFrequencyDomain({Semicircle(14)}, 1.0, o), std::invalid_argument);
+  CHECK_THROWS_AS(SolveSectionFrequencyDomain({Semicircle(14)}, -1.0, FrequencyDomainOptions{}),
+                  std::invalid_argument);
+  CHECK_THROWS_AS(SolveSectionFrequencyDomain({}, 1.0, FrequencyDomainOptions{}), std::invalid_argument);
+}
