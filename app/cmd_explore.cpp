@@ -15,6 +15,7 @@
 #include "app/progress.h"
 #include "hullopt/version.h"
 #include "io/campaign_outputs.h"
+#include "io/campaign_plots.h"
 #include "io/input_error.h"
 #include "optimizer/design_sampling.h"
 #include "optimizer/parallel_evaluation.h"
@@ -157,6 +158,7 @@ void RunExplore(const ExploreCliOptions& o) {
   }
   s["wall_time_s"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
   io::WriteJson(OutPath(o.out, "summary.json"), s);
+  io::WriteExplorePlots(o.out, recs, names, evaluator.ObjectiveLabel());
   if (best >= 0) {
     char comment[200];
     std::snprintf(
@@ -170,7 +172,7 @@ void RunExplore(const ExploreCliOptions& o) {
   if (!o.quiet) {
     std::printf("%zu samples (%zu feasible)", recs.size(), fx.size());
     if (best >= 0) std::printf(", best objective %.10g at evaluation %ld", recs[best].result.objective, best);
-    std::printf("\nwrote %s, summary.json%s in %s\n", journal.path().c_str(),
+    std::printf("\nwrote %s, summary.json, scatter.svg%s in %s\n", journal.path().c_str(),
                 s["sensitivity"].is_null() ? "" : ", sensitivity.csv", o.out.c_str());
   }
 }

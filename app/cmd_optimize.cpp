@@ -18,6 +18,7 @@
 #include "app/progress.h"
 #include "hullopt/version.h"
 #include "io/campaign_outputs.h"
+#include "io/campaign_plots.h"
 #include "io/input_error.h"
 #include "optimizer/nlopt_algorithms.h"
 #include "optimizer/nlopt_driver.h"
@@ -210,6 +211,8 @@ void RunOptimize(const OptimizeOptions& o) {
   s["runs"] = runs;
   s["wall_time_s"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
   io::WriteJson(OutPath(o.out, "summary.json"), s);
+  io::WriteOptimizePlots(o.out, recs, def.VariableNames(), def.LowerBounds(), def.UpperBounds(),
+                         evaluator.ObjectiveLabel());
   if (best >= 0) {
     char comment[200];
     std::snprintf(
@@ -228,7 +231,8 @@ void RunOptimize(const OptimizeOptions& o) {
     } else {
       std::printf("no feasible design found in %zu evaluations\n", recs.size());
     }
-    std::printf("wrote %s, best.yaml, summary.json in %s\n", journal.path().c_str(), o.out.c_str());
+    std::printf("wrote %s, best.yaml, summary.json, convergence.svg, variables.svg in %s\n",
+                journal.path().c_str(), o.out.c_str());
   }
 }
 
