@@ -48,10 +48,6 @@ void RunRao(const std::string& config_file, const std::string& out_dir) {
   auto mass_map = root.MapOrEmpty("mass");
   const hull::MassProperties mass = io::ParseMassConfig(mass_map, hs);
   root.Finish();
-  if (sc.method == "strip_theory_stf")
-    throw io::InputError(config_file +
-                         ": key 'solver.method' = strip_theory_stf: not yet wired to the 2D frequency-domain "
-                         "sections in this build (seakeeping/strip_theory_stf.h holds the solver)");
   const double U = speed.MetresPerSecond(hs.L_m, water.g_m_s2);
   const sk::StripKernelBuilder builder = kernel_kind == "impulsive"
                                              ? sk::StripKernelBuilder(sk::FillImpulsiveStripKernel)
@@ -60,6 +56,8 @@ void RunRao(const std::string& config_file, const std::string& out_dir) {
   o.sections = sc.sections;
   o.panels = sc.panels;
   o.interaction = sc.interaction;
+  o.method = sc.method == "strip_theory_stf" ? sk::RaoSolverOptions::Method::kStripTheory
+                                             : sk::RaoSolverOptions::Method::kTimeDomainStrip;
   o.path = sc.path == "periodic" ? sk::RaoSolverOptions::Path::kPeriodic
                                  : sk::RaoSolverOptions::Path::kTimeMarching;
   o.motion.damping_cs = sc.cs;
@@ -84,8 +82,9 @@ void RunRao(const std::string& config_file, const std::string& out_dir) {
   } catch (const std::domain_error& e) {
     throw io::InputError(std::string("hull '") + hull_name + "': " + e.what());
   }
-  io::WriteSvg(io::RaoFigure({t}, {"time-domain strip (" + kernel_kind + ")"}, hs.L_m, "RAOs: " + fn.str()),
-               OutPath(out_dir, "rao.svg"));
+  const std::string curve =
+      sc.method == "strip_theory_stf" ? "strip theory (STF type)" : "time-domain strip (" + kernel_kind + ")";
+  io::WriteSvg(io::RaoFigure({t}, {curve}, hs.L_m, "RAOs: " + fn.str()), OutPath(out_dir, "rao.svg"));
 }
 
 }  // namespace

@@ -1,9 +1,7 @@
-// RAO sweep timing (issue 4, item 5): 60 frequencies, 40 sections × 14 panels, one demihull.
-// Periodic path (2b) with 1 and 2 OpenMP threads, and the time-marching path (2a) on the same sweep.
-//
-// Until the transient-Green-function kernel is wired in, the kernel is a hand-built one of the production
-// size and shape (every force[n][m] row dense, 14 panels per step), so the solver cost is measured exactly;
-// the kernel build is timed separately once BuildStripKernel is available.
+// RAO sweep timing (issue 4, item 5): 60 frequencies, 40 sections × 14 panels, one demihull (Delft 372 at
+// Fn 0.75, the paper's transient Green-function kernel). Periodic path (2b) with 1 and 2 OpenMP threads, the
+// time-marching path (2a) on the same sweep, and the kernel build (once per hull and speed) with 1 and 2
+// threads. Run: build/bench/bench_rao (quote medians with the core count).
 #include <benchmark/benchmark.h>
 #ifdef _OPENMP
 #include <omp.h>
@@ -13,92 +11,82 @@
 
 #include "seakeeping/frequency_list.h"
 #include "seakeeping/head_sea_ship_model.h"
-#include "seakeeping/impulsive_strip_kernel.h"
 #include "seakeeping/periodic_motion_solver.h"
+#include "seakeeping/rao_solver.h"
 #include "seakeeping/strip_force_model.h"
 #include "seakeeping/strip_geometry.h"
 #include "seakeeping/time_marching_motion.h"
-#include "tests/support/box_strip_kernel.h"
 #include "tests/support/delft372_hull.h"
 
 namespace sk = hullopt::sk;
 
 namespace {
 
-struct Sweep {
-  hullopt::testing::BoxHull hull;
-  sk::StripKernel kernel;
-  hullopt::hull::MassProperties mass;
+constexpr double kRho = 1000.0, kG = 9.81;
+
+struct Demihull {
+  hullopt::hull::HullForm hull = hullopt::testing::Delft372Hull(HULLOPT_SOURCE_DIR);
+  double speed = 0.75 * std::sqrt(kG * 3.0);
+  hullopt::hull::MassProperties mass = hullopt::testing::Delft372Mass();
   std::vector<double> omega;
-  Sweep() {
-    hull.sections = 40;
-    hull.bottom_panels = 12;  // 1 + 12 + 1 = 14 panels per section
-    kernel = hullopt::testing::BoxKernel(hull, 400.0);
-    // Dense memory tail, decaying and oscillating like a free-surface memory kernel, small enough to stay
-    // stable.
-    for (int n = 0; n < kernel.Steps(); ++n)
-      for (int m = 0; m + 1 < n; ++m)
-        kernel.force[n][m] =
-            kernel.force[n][n] * (-0.02 * std::exp(-(n - m) / 8.0) * std::cos(0.4 * (n - m)));
-    mass = {hull.rho * hull.L * hull.B * hull.T, hull.L / 2, hull.L / 4, 0.0};
-    omega = sk::WaveFrequencies(sk::FrequencySpec::Range(sk::FrequencySpec::Quantity::kOmegaE, 1.0, 9.0, 60),
-                                hull.speed, hull.g, hull.L);
+  sk::StripKernel geometry, kernel;
+  Demihull() {
+    mass.mass_kg *= 0.5;  // one demihull alone
+    sk::StripGeometryOptions o;
+    o.body = 0;
+    geometry = sk::StripKernelGeometry(hull, o, speed, kRho, kG);
+    kernel = geometry;
+    sk::TransientGreenKernelBuilder()(&kernel);
+    omega = sk::WaveFrequencies(sk::FrequencySpec::Range(sk::FrequencySpec::Quantity::kOmegaE, 3.0, 25.0, 60),
+                                speed, kG, 3.0);
   }
 };
 
-const Sweep& TheSweep() {
-  static const Sweep s;
-  return s;
+const Demihull& TheDemihull() {
+  static const Demihull d;
+  return d;
+}
+
+sk::MotionOptions Options() {
+  sk::MotionOptions o;
+  o.damping_cs = 0.024;
+  return o;
+}
+
+void SetThreads(int n) {
+#ifdef _OPENMP
+  omp_set_num_threads(n);
+#endif
 }
 
 void BM_PeriodicSweep(benchmark::State& state) {
-#ifdef _OPENMP
-  omp_set_num_threads(static_cast<int>(state.range(0)));
-#endif
-  const auto& s = TheSweep();
-  sk::MotionOptions o;
-  o.damping_cs = 0.05;
-  const sk::HeadSeaShipModel model(s.kernel, s.mass, o);
-  for (auto _ : state) benchmark::DoNotOptimize(sk::SolvePeriodicRaos(model, s.omega));
-  state.counters["frequencies"] = static_cast<double>(s.omega.size());
+  const auto& d = TheDemihull();
+  SetThreads(static_cast<int>(state.range(0)));
+  const sk::HeadSeaShipModel model(d.kernel, d.mass, Options());
+  for (auto _ : state) benchmark::DoNotOptimize(sk::SolvePeriodicRaos(model, d.omega));
+  state.counters["frequencies"] = static_cast<double>(d.omega.size());
 }
 BENCHMARK(BM_PeriodicSweep)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 void BM_TimeMarchingSweep(benchmark::State& state) {
-  const auto& s = TheSweep();
-  sk::MotionOptions o;
-  o.damping_cs = 0.05;
-  const sk::HeadSeaShipModel model(s.kernel, s.mass, o);
-  sk::KernelStripForceModel forces(s.kernel);
-  sk::MarchingOptions mo;
-  for (auto _ : state) benchmark::DoNotOptimize(sk::SolveMarchingRaos(model, forces, s.omega, mo));
+  const auto& d = TheDemihull();
+  const sk::HeadSeaShipModel model(d.kernel, d.mass, Options());
+  sk::KernelStripForceModel forces(d.kernel);
+  for (auto _ : state)
+    benchmark::DoNotOptimize(sk::SolveMarchingRaos(model, forces, d.omega, sk::MarchingOptions{}));
 }
 BENCHMARK(BM_TimeMarchingSweep)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(1)->Repetitions(3);
 
-// End to end on a real demihull (Delft 372, one demihull alone, 40 × 14): geometry, kernel (impulsive
-// stand-in until the transient-Green-function kernel is wired in) and the 60-frequency periodic sweep.
-void BM_Delft372DemihullSweep(benchmark::State& state) {
-#ifdef _OPENMP
-  omp_set_num_threads(static_cast<int>(state.range(0)));
-#endif
-  const auto hull = hullopt::testing::Delft372Hull(HULLOPT_SOURCE_DIR);
-  const double U = 0.75 * std::sqrt(9.81 * 3.0);
-  const auto omega = sk::WaveFrequencies(
-      sk::FrequencySpec::Range(sk::FrequencySpec::Quantity::kOmegaE, 3.0, 25.0, 60), U, 9.81, 3.0);
-  hullopt::hull::MassProperties mass = hullopt::testing::Delft372Mass();
-  mass.mass_kg *= 0.5;
-  sk::StripGeometryOptions o;
-  o.body = 0;
-  sk::MotionOptions mo;
-  mo.damping_cs = 0.024;
+void BM_KernelBuild(benchmark::State& state) {
+  const auto& d = TheDemihull();
+  SetThreads(static_cast<int>(state.range(0)));
   for (auto _ : state) {
-    auto k = sk::StripKernelGeometry(hull, o, U, 1000.0, 9.81);
-    sk::FillImpulsiveStripKernel(&k);
-    const sk::HeadSeaShipModel model(k, mass, mo);
-    benchmark::DoNotOptimize(sk::SolvePeriodicRaos(model, omega));
+    sk::StripKernel k = d.geometry;
+    sk::TransientGreenKernelBuilder()(&k);
+    benchmark::DoNotOptimize(k.force.data());
   }
 }
-BENCHMARK(BM_Delft372DemihullSweep)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_KernelBuild)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(1);
 
 }  // namespace
 

@@ -18,14 +18,17 @@ void CheckFrequencies(const std::vector<double>& omega_rad_s) {
 }  // namespace
 
 std::array<std::complex<double>, 2> SolvePeriodicFrequency(const HeadSeaShipModel& model, double w,
-                                                           const PeriodicStripForce& strip) {
+                                                           const PeriodicStripForce& strip,
+                                                           PeriodicKinematics kinematics) {
   const auto& st = model.stations();
   const int N = model.Steps();
   const double U = model.speed(), g = model.g(), rho = model.rho(), dx = model.dx(), dt = model.dt();
   const double damp = model.DampingFactor();
   const double we = HeadSeaEncounterFrequency(w, U, g);
   const double k = w * w / g;
-  const cd iwe(0.0, we), iw(0.0, w);
+  // iwe: the motion's d/dt (exact or the trapezoid's); the wave's own rates stay exact (iω).
+  const double wm = kinematics == PeriodicKinematics::kExact ? we : 2.0 / dt * std::tan(0.5 * we * dt);
+  const cd iwe(0.0, wm), iw(0.0, w);
   std::vector<cd> lag(N);  // e^{−iω_e j Δt}: the strip now at step n was at step m (n − m) steps ago
   for (int j = 0; j < N; ++j) lag[j] = std::polar(1.0, -we * j * dt);
   // Wave input at each station: e^{ikx_m} and the panel weights n_z e^{k z} (the strip sees −iω A times
@@ -61,14 +64,14 @@ std::array<std::complex<double>, 2> SolvePeriodicFrequency(const HeadSeaShipMode
   }
   // Cramer's rule on the 2×2 system: NaN or infinity anywhere in it propagates into X (a pivoting solver
   // could silently treat a NaN row as rank-deficient and return zeros).
-  const cd a11 = -we * we * model.mass() - F33, a12 = -F35, a21 = -F53;
-  const cd a22 = -we * we * model.pitch_inertia() - F55;
+  const cd a11 = -wm * wm * model.mass() - F33, a12 = -F35, a21 = -F53;
+  const cd a22 = -wm * wm * model.pitch_inertia() - F55;
   const cd det = a11 * a22 - a12 * a21;
   return {(a22 * F3A - a12 * F5A) / det, (a11 * F5A - a21 * F3A) / det / k};
 }
 
 RaoTable SolvePeriodicRaos(const HeadSeaShipModel& model, const std::vector<double>& omega_rad_s,
-                           const PeriodicStripForce& strip) {
+                           const PeriodicStripForce& strip, PeriodicKinematics kinematics) {
   CheckFrequencies(omega_rad_s);
   RaoTable out;
   out.speed_m_s = model.speed();
@@ -81,7 +84,7 @@ RaoTable SolvePeriodicRaos(const HeadSeaShipModel& model, const std::vector<doub
   std::vector<int> bad(nf, 0);
 #pragma omp parallel for schedule(dynamic)
   for (int f = 0; f < nf; ++f) {
-    const auto x = SolvePeriodicFrequency(model, omega_rad_s[f], strip);
+    const auto x = SolvePeriodicFrequency(model, omega_rad_s[f], strip, kinematics);
     out.omega_e_rad_s[f] = HeadSeaEncounterFrequency(omega_rad_s[f], model.speed(), model.g());
     out.heave[f] = x[0];
     out.pitch[f] = x[1];
@@ -93,14 +96,15 @@ RaoTable SolvePeriodicRaos(const HeadSeaShipModel& model, const std::vector<doub
   return out;
 }
 
-RaoTable SolvePeriodicRaos(const HeadSeaShipModel& model, const std::vector<double>& omega_rad_s) {
+RaoTable SolvePeriodicRaos(const HeadSeaShipModel& model, const std::vector<double>& omega_rad_s,
+                           PeriodicKinematics kinematics) {
   const StripKernel& kernel = model.kernel();
   PeriodicStripForce strip;
   strip.first_step = [](int) { return 0; };
   strip.dot = [&kernel](int n, int m, const Eigen::VectorXd& v, double) -> std::complex<double> {
     return kernel.force[n][m].dot(v);
   };
-  return SolvePeriodicRaos(model, omega_rad_s, strip);
+  return SolvePeriodicRaos(model, omega_rad_s, strip, kinematics);
 }
 
 }  // namespace hullopt::sk

@@ -25,18 +25,27 @@ struct PeriodicStripForce {
   std::function<std::complex<double>(int n, int m, const Eigen::VectorXd& v, double omega_e)> dot;
 };
 
+/// How motion, velocity and acceleration amplitudes relate. kExact: v = iω_e x, a = −ω_e² x (the steady state
+/// of the strip equations in continuous time). kTrapezoid: v = iΩ x, a = −Ω² x with Ω = (2/Δt) tan(ω_e Δt/2),
+/// the steady state of the time-marching scheme (Newmark average acceleration, passes converged) to
+/// round-off; the two differ by the trapezoid frequency warp (ω_e Δt)²/12.
+enum class PeriodicKinematics { kExact, kTrapezoid };
+
 /// X3/A and X5/(kA) at one wave frequency ω [rad/s] (no finiteness check).
-std::array<std::complex<double>, 2> SolvePeriodicFrequency(const HeadSeaShipModel& model, double omega_rad_s,
-                                                           const PeriodicStripForce& strip);
+std::array<std::complex<double>, 2> SolvePeriodicFrequency(
+    const HeadSeaShipModel& model, double omega_rad_s, const PeriodicStripForce& strip,
+    PeriodicKinematics kinematics = PeriodicKinematics::kExact);
 
 /// RAOs with a general strip force (frequencies in parallel; std::domain_error for non-finite results).
 RaoTable SolvePeriodicRaos(const HeadSeaShipModel& model, const std::vector<double>& omega_rad_s,
-                           const PeriodicStripForce& strip);
+                           const PeriodicStripForce& strip,
+                           PeriodicKinematics kinematics = PeriodicKinematics::kExact);
 
 /// RAOs at the wave frequencies omega_rad_s [rad/s] (> 0, increasing). Frequencies are solved in parallel
 /// with OpenMP (identical results for any thread count). Throws std::domain_error (via
 /// HeadSeaShipModel::ReportNonFinite) naming the hull and frequency if a result is not finite, and
 /// std::invalid_argument for an empty or non-positive frequency list.
-RaoTable SolvePeriodicRaos(const HeadSeaShipModel& model, const std::vector<double>& omega_rad_s);
+RaoTable SolvePeriodicRaos(const HeadSeaShipModel& model, const std::vector<double>& omega_rad_s,
+                           PeriodicKinematics kinematics = PeriodicKinematics::kExact);
 
 }  // namespace hullopt::sk

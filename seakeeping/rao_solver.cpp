@@ -5,6 +5,7 @@
 #include "seakeeping/periodic_motion_solver.h"
 #include "seakeeping/strip_force_model.h"
 #include "seakeeping/strip_kernel_builder.h"
+#include "seakeeping/strip_theory_stf.h"
 
 namespace hullopt::sk {
 
@@ -53,6 +54,17 @@ StripKernel BuildHullStripKernel(const hull::HullForm& hull, const RaoSolverOpti
 RaoTable ComputeRaos(const hull::HullForm& hull, const hull::MassProperties& mass, double speed_m_s,
                      double rho_kg_m3, double g_m_s2, const std::vector<double>& omega_rad_s,
                      const RaoSolverOptions& options, const StripKernelBuilder& builder) {
+  if (options.method == RaoSolverOptions::Method::kStripTheory) {
+    std::string err;
+    if (!options.IsValid(&err)) throw std::invalid_argument(err);
+    StripGeometryOptions g;
+    g.sections = options.sections;
+    g.panels = options.panels;
+    const StripKernel geometry = StripKernelGeometry(hull, g, speed_m_s, rho_kg_m3, g_m_s2);
+    const HeadSeaShipModel model(geometry, mass, options.motion);
+    return SolveStripTheoryRaos(model, omega_rad_s,
+                                FrequencyDomainSectionRows(geometry, options.panels, options.interaction));
+  }
   const StripKernel kernel = BuildHullStripKernel(hull, options, speed_m_s, rho_kg_m3, g_m_s2, builder);
   const HeadSeaShipModel model(kernel, mass, options.motion);
   if (options.path == RaoSolverOptions::Path::kPeriodic) return SolvePeriodicRaos(model, omega_rad_s);

@@ -24,8 +24,10 @@ StripKernelBuilder TransientGreenKernelBuilder();
 
 struct RaoSolverOptions {
   enum class Path { kPeriodic, kTimeMarching };
-  int sections = 40;        ///< strip steps along the hull (paper 40)
-  int panels = 14;          ///< panels per wetted section of one body (paper 14)
+  enum class Method { kTimeDomainStrip, kStripTheory };
+  Method method = Method::kTimeDomainStrip;  ///< strip theory: frequency-domain sections (builder unused)
+  int sections = 40;                         ///< strip steps along the hull (paper 40)
+  int panels = 14;                           ///< panels per wetted section of one body (paper 14)
   bool interaction = true;  ///< multihull bodies share the strips; false: each body alone, forces added
   Path path = Path::kPeriodic;
   MotionOptions motion;      ///< Cs, hull name

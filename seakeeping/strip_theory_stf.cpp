@@ -1,9 +1,13 @@
 #include "seakeeping/strip_theory_stf.h"
 
 #include <cmath>
+#include <map>
+#include <memory>
+#include <mutex>
 #include <stdexcept>
 
 #include "seakeeping/encounter_frequency.h"
+#include "seakeeping/frequency_domain_section.h"
 #include "seakeeping/periodic_motion_solver.h"
 
 namespace hullopt::sk {
@@ -18,6 +22,56 @@ Eigen::RowVectorXcd UniformHeaveRow(const std::vector<Panel>& panels, double a33
   for (Eigen::Index i = 0; i < n; ++i)
     r[i] = norm > 0 ? z * panels[i].Normal()[1] * panels[i].Length() / norm : 0.0;
   return r;
+}
+
+SectionRowProvider FrequencyDomainSectionRows(const StripKernel& geometry, int panels_per_body,
+                                              bool interaction) {
+  if (panels_per_body < 1)
+    throw std::invalid_argument("FrequencyDomainSectionRows: panels_per_body must be >= 1");
+  struct Cache {
+    std::mutex mutex;
+    std::map<std::pair<int, double>, Eigen::RowVectorXcd> rows;
+  };
+  auto cache = std::make_shared<Cache>();
+  const StripKernel* g = &geometry;
+  return [cache, g, panels_per_body, interaction](int n, double omega_e) -> Eigen::RowVectorXcd {
+    {
+      std::lock_guard<std::mutex> lock(cache->mutex);
+      const auto it = cache->rows.find({n, omega_e});
+      if (it != cache->rows.end()) return it->second;
+    }
+    const auto& all = g->panels[n];
+    Eigen::RowVectorXcd r = Eigen::RowVectorXcd::Zero(static_cast<Eigen::Index>(all.size()));
+    if (!all.empty()) {
+      if (all.size() % panels_per_body != 0)
+        throw std::invalid_argument(
+            "FrequencyDomainSectionRows: panel count is not a multiple of panels_per_body");
+      std::vector<std::vector<Panel>> sections;
+      for (std::size_t i = 0; i < all.size(); i += panels_per_body)
+        sections.emplace_back(all.begin() + i, all.begin() + i + panels_per_body);
+      FrequencyDomainOptions o;
+      o.rho_kg_m3 = g->rho_kg_m3;
+      o.g_m_s2 = g->g_m_s2;
+      // F3 = iω_e ρ ∮ φ n_z dl (p = −iω_e ρ φ, n into the fluid); by reciprocity the heave force of a normal
+      // velocity V is iω_e ρ ∮ ψ_heave V dl.
+      const std::complex<double> c(0.0, omega_e * g->rho_kg_m3);
+      if (interaction) {
+        const SectionHydrodynamics h = SolveSectionFrequencyDomain(sections, omega_e, o);
+        for (Eigen::Index i = 0; i < r.size(); ++i) r[i] = c * h.radiation_potential(i, 1) * all[i].Length();
+      } else {
+        for (std::size_t b = 0; b < sections.size(); ++b) {
+          const SectionHydrodynamics h = SolveSectionFrequencyDomain({sections[b]}, omega_e, o);
+          for (int j = 0; j < panels_per_body; ++j) {
+            const auto i = static_cast<Eigen::Index>(b * panels_per_body + j);
+            r[i] = c * h.radiation_potential(j, 1) * all[i].Length();
+          }
+        }
+      }
+    }
+    std::lock_guard<std::mutex> lock(cache->mutex);
+    cache->rows[{n, omega_e}] = r;
+    return r;
+  };
 }
 
 RaoTable SolveStripTheoryRaos(const HeadSeaShipModel& model, const std::vector<double>& omega_rad_s,

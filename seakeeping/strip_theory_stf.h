@@ -19,6 +19,7 @@
 
 #include "seakeeping/head_sea_ship_model.h"
 #include "seakeeping/rao_table.h"
+#include "seakeeping/strip_kernel.h"
 
 namespace hullopt::sk {
 
@@ -31,6 +32,13 @@ using SectionRowProvider = std::function<Eigen::RowVectorXcd(int step, double om
 /// spread like a uniform heave: R = −(iω_e a33 + b33) c, c_i = n_z,i l_i / Σ n_z² l.
 Eigen::RowVectorXcd UniformHeaveRow(const std::vector<Panel>& panels, double a33, double b33,
                                     double omega_e_rad_s);
+
+/// Rows from the 2D frequency-domain panel solver (frequency_domain_section.h) for the sections of `geometry`
+/// (each step's panels in consecutive groups of panels_per_body, one group per body): R_i = iω_e ρ ψ_i l_i
+/// with ψ the heave radiation potential per unit velocity. Solves each (step, ω_e) once and caches it.
+/// interaction: all bodies of a step in one 2D problem; false: each body alone. geometry must outlive it.
+SectionRowProvider FrequencyDomainSectionRows(const StripKernel& geometry, int panels_per_body,
+                                              bool interaction = true);
 
 /// RAOs by strip theory at the wave frequencies (model: geometry, mass, Cs; its kernel's force rows are not
 /// used). Throws like SolvePeriodicRaos.
