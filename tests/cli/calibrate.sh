@@ -79,7 +79,7 @@ expect_error unknown_key "$(cfg "$DELFT" '  Cs_inital: 0.03')" "unknown key 'cal
 expect_error speed_in_knots "$(printf 'speed: { kn: 20 }\ncalibrate:\n  data: [%s]\n  %s\n' "$DELFT" "$MODEL")" "give the speed as Fn"
 expect_error bad_mode "$(cfg "$DELFT" '  mode: everything')" "one of: single, per_speed, linear_in_parameter"
 expect_error negative_weight "$(cfg "$DELFT" '  weights: { heave: -1 }')" "calibrate.weights.heave' = -1: must be >= 0"
-expect_error no_model "$(printf 'speed: { Fn: 0.75 }\ncalibrate:\n  data: [%s]\n' "$DELFT")" "strip solver is not wired"
+expect_error no_model "$(printf 'speed: { Fn: 0.75 }\ncalibrate:\n  data: [%s]\n' "$DELFT")" "missing required key 'hull'"
 expect_error missing_file "$(cfg "$T/nope.csv")" "nope.csv: cannot open tank RAO file"
 
 [ $fail -eq 0 ] && echo "cli calibrate: all checks passed"

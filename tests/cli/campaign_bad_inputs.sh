@@ -84,7 +84,7 @@ expect_error bad_method "must be one of: sobol, lhs" explore <<'Y'
   start: { x1: 0 }
   objective: { analytic: sphere }
 Y
-expect_error no_objective "MSI objective is not available" optimize <<'Y'
+expect_error no_objective "missing required key 'seas'" optimize <<'Y'
   variables: { x1: [-2, 2] }
   start: { x1: 0 }
 Y
