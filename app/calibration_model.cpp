@@ -2,10 +2,51 @@
 
 #include <memory>
 
+#include <cmath>
+
+#include "app/design_case.h"
 #include "io/input_error.h"
+#include "optimizer/tank_rao_frequency.h"
 #include "optimizer/synthetic_oscillator_rao.h"
 
 namespace hullopt::app {
+namespace {
+
+// The paper's method for the config's own hull: the strip kernels do not depend on Cs, so they are built once
+// per speed; each model call is then a 2×2 solve per measured frequency.
+opt::CsRaoModel StripSolverModel(io::YamlMap& root, const io::CalibrateHull& hull,
+                                 const std::vector<opt::CalibrationCase>& mine) {
+  if (!hull.name.empty())
+    throw io::InputError(root.file() + ": calibrate.hulls['" + hull.name +
+                         "']: the strip solver calibrates the config's own hull (the calibrate.data form); "
+                         "calibrate several hulls with one config each, or give each a test model");
+  const DesignCase base = LoadDesignCase(root, root.file(), "calibration hull", /*read_speed=*/false);
+  struct Speed {
+    DesignCase design;
+    sk::StripKernel kernel;
+    opt::CaseFrequencyGrid grid;
+  };
+  auto speeds = std::make_shared<std::vector<Speed>>();
+  for (const auto& c : mine) {
+    Speed s{base, {}, {}};
+    s.design.speed_m_s = c.Fn * std::sqrt(base.water.g_m_s2 * base.hydrostatics.L_m);
+    s.kernel = BuildDesignKernel(s.design);
+    s.grid = opt::WaveFrequencyGrid(c, base.hydrostatics.L_m, base.water.g_m_s2);
+    speeds->push_back(std::move(s));
+  }
+  return [speeds](double Cs, int local) {
+    const Speed& s = speeds->at(local);
+    const sk::RaoTable rao = DesignRaosFromKernel(s.design, s.kernel, s.grid.omega_rad_s, Cs);
+    opt::RaoPrediction p;
+    for (int i : s.grid.index_of_point) {
+      p.heave.push_back(rao.heave.at(i));
+      p.pitch.push_back(rao.pitch.at(i));
+    }
+    return p;
+  };
+}
+
+}  // namespace
 
 opt::CsRaoModel MakeCalibrationModel(io::YamlMap& root, const io::CalibrateConfig& config,
                                      const std::vector<opt::CalibrationCase>& cases) {
@@ -28,13 +69,7 @@ opt::CsRaoModel MakeCalibrationModel(io::YamlMap& root, const io::CalibrateConfi
     if (hull.synthetic) {
       part.model = opt::MakeSyntheticOscillatorModel(*hull.synthetic, mine);
     } else {
-      // TODO(lead): build the strip model of this hull from root's hull/mass/water/solver sections (or from
-      // the hull entry's own config), precompute its Cs-independent kernels once per speed, and return
-      // [=](double Cs, int local) { 2×2 solve per measured frequency of mine[local] }.
-      throw io::InputError(root.file() + ": calibrate" +
-                           (hull.name.empty() ? "" : " hull '" + hull.name + "'") +
-                           ": the strip solver is not wired to 'hullopt calibrate' in this version; give "
-                           "calibrate.model.synthetic_oscillator (a test/demo model) to exercise the fit");
+      part.model = StripSolverModel(root, hull, mine);
     }
     parts->push_back(std::move(part));
   }

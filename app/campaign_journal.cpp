@@ -29,12 +29,15 @@ CampaignJournal::CampaignJournal(const std::string& dir, const std::string& file
   stored_hash = MpiBroadcast(stored_hash);
   const io::HistoryFile log = io::ParseHistory(text, path_, layout_);
   if (log.exists) {
-    while (!stored_hash.empty() && (stored_hash.back() == '\n' || stored_hash.back() == ' ')) stored_hash.pop_back();
+    while (!stored_hash.empty() && (stored_hash.back() == '\n' || stored_hash.back() == ' '))
+      stored_hash.pop_back();
     if (stored_hash != config_hash_) {
-      throw io::InputError(path_ + ": this output folder holds a campaign run with a different config (config "
-                           "hash " + (stored_hash.empty() ? std::string("missing") : stored_hash) + ", now " +
-                           config_hash_ + "); refusing to resume: use another --out folder, or delete " + path_ +
-                           " to start over");
+      throw io::InputError(path_ +
+                           ": this output folder holds a campaign run with a different config (config "
+                           "hash " +
+                           (stored_hash.empty() ? std::string("missing") : stored_hash) + ", now " +
+                           config_hash_ + "); refusing to resume: use another --out folder, or delete " +
+                           path_ + " to start over");
     }
   }
   for (const auto& row : log.rows) {
@@ -49,7 +52,8 @@ CampaignJournal::~CampaignJournal() = default;
 
 opt::EvaluationRecord CampaignJournal::FromRow(const io::HistoryRow& row) const {
   opt::EvaluationRecord rec = row.record;
-  if (rec.result.produced) rec.result.quantities = constraints_.QuantitiesFromReported(row.reported, quantities_);
+  if (rec.result.produced)
+    rec.result.quantities = constraints_.QuantitiesFromReported(row.reported, quantities_);
   return rec;
 }
 
@@ -69,7 +73,8 @@ opt::ReplayLookup CampaignJournal::Replay() const {
 long CampaignJournal::Add(const opt::EvaluationRecord& rec) {
   const long n = static_cast<long>(records_.size());
   if (n >= logged()) {
-    if (appender_) appender_->Append(io::FormatHistoryRow(n, rec, constraints_.ReportedValues(rec.result), layout_));
+    if (appender_)
+      appender_->Append(io::FormatHistoryRow(n, rec, constraints_.ReportedValues(rec.result), layout_));
   } else {
     ++replayed_;
   }

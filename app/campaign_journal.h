@@ -20,7 +20,8 @@ class CampaignJournal {
   /// Collective. Reads DIR/file and DIR/file.config_hash on rank 0 and shares them. Throws io::InputError if
   /// the log exists but was made with a different config (hash of config.resolved.yaml), or is damaged.
   CampaignJournal(const std::string& dir, const std::string& file, io::HistoryLayout layout,
-                  const std::string& config_hash, const opt::ConstraintSet& constraints, std::size_t quantities);
+                  const std::string& config_hash, const opt::ConstraintSet& constraints,
+                  std::size_t quantities);
   ~CampaignJournal();
 
   /// Rank 0: opens the file for appending (dropping an incomplete last line, writing the header if new) and

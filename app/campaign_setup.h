@@ -13,9 +13,9 @@ namespace hullopt::app {
 
 struct LoadedCampaign {
   io::CampaignConfig config;
-  YAML::Node raw;               ///< the config file as written (base for best.yaml)
-  YAML::Node resolved;          ///< resolved tree (config.resolved.yaml)
-  std::string config_hash;      ///< io::TextHash of the emitted resolved tree
+  YAML::Node raw;           ///< the config file as written (base for best.yaml)
+  YAML::Node resolved;      ///< resolved tree (config.resolved.yaml)
+  std::string config_hash;  ///< io::TextHash of the emitted resolved tree
   std::unique_ptr<opt::Evaluator> evaluator;
 };
 

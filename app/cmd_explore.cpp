@@ -1,12 +1,11 @@
 // hullopt explore CONFIG --out DIR: evaluate a Sobol or Latin-hypercube sample of the design box in parallel
 // (OpenMP threads, MPI ranks), log samples.csv in sample order (identical for any thread/rank count),
 // and estimate the sensitivity of the objective to each variable. Resumable like optimize.
-#include <nlohmann/json.hpp>
-
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <memory>
+#include <nlohmann/json.hpp>
 
 #include "app/campaign_journal.h"
 #include "app/campaign_setup.h"
@@ -16,6 +15,7 @@
 #include "app/progress.h"
 #include "hullopt/version.h"
 #include "io/campaign_outputs.h"
+#include "io/campaign_plots.h"
 #include "io/input_error.h"
 #include "optimizer/design_sampling.h"
 #include "optimizer/parallel_evaluation.h"
@@ -50,9 +50,10 @@ void RunExplore(const ExploreCliOptions& o) {
   const auto xs = opt::SampleDesigns(def, lc.config.explore.method, n);
   const long logged = std::min<long>(journal.logged(), n);
   if (rank == 0 && !o.quiet && logged > 0) {
-    std::fprintf(stderr, "explore: resuming: %ld samples in %s are replayed, not recomputed%s\n", logged,
-                 journal.path().c_str(),
-                 journal.truncated_tail() ? " (an incomplete last row from an interrupted run was discarded)" : "");
+    std::fprintf(
+        stderr, "explore: resuming: %ld samples in %s are replayed, not recomputed%s\n", logged,
+        journal.path().c_str(),
+        journal.truncated_tail() ? " (an incomplete last row from an interrupted run was discarded)" : "");
   }
   Progress progress("explore", n, rank == 0 && !o.quiet);
   auto add = [&](const opt::EvaluationRecord& rec) {
@@ -64,10 +65,14 @@ void RunExplore(const ExploreCliOptions& o) {
     const auto replay = journal.Replay();
     for (long i = 0; i < logged; ++i) {
       try {
-        add(*opt::LookupReplay(replay, 0, static_cast<int>(i), xs[i]));
+        const opt::EvaluationRecord* rec = opt::LookupReplay(replay, 0, static_cast<int>(i), xs[i]);
+        if (rec == nullptr)
+          throw opt::ReplayMismatch("row " + std::to_string(i) + " is not sample " + std::to_string(i));
+        add(*rec);
       } catch (const opt::ReplayMismatch& e) {
-        throw io::InputError(journal.path() + ": cannot resume, the log does not match this campaign's samples: " +
-                             e.what() + "; delete the file to start over");
+        throw io::InputError(journal.path() +
+                             ": cannot resume, the log does not match this campaign's samples: " + e.what() +
+                             "; delete the file to start over");
       }
     }
   }
@@ -90,7 +95,8 @@ void RunExplore(const ExploreCliOptions& o) {
       const long first = std::min<long>(n, base + static_cast<long>(rank) * chunk);
       const long last = std::min<long>(n, first + chunk);
       std::string rows;
-      opt::EvaluateInOrder(evaluator, xs, static_cast<int>(first), static_cast<int>(last), threads, make_record,
+      opt::EvaluateInOrder(evaluator, xs, static_cast<int>(first), static_cast<int>(last), threads,
+                           make_record,
                            [&](const opt::EvaluationRecord& rec) { rows += journal.Serialise(rec); });
       const auto gathered = MpiGather(rows);
       for (const auto& part : gathered) {
@@ -152,19 +158,21 @@ void RunExplore(const ExploreCliOptions& o) {
   }
   s["wall_time_s"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
   io::WriteJson(OutPath(o.out, "summary.json"), s);
+  io::WriteExplorePlots(o.out, recs, names, evaluator.ObjectiveLabel());
   if (best >= 0) {
     char comment[200];
-    std::snprintf(comment, sizeof comment,
-                  "hullopt explore: best sample of %s (evaluation %ld, objective %.10g); base config with its "
-                  "variable values",
-                  o.config.c_str(), best, recs[best].result.objective);
+    std::snprintf(
+        comment, sizeof comment,
+        "hullopt explore: best sample of %s (evaluation %ld, objective %.10g); base config with its "
+        "variable values",
+        o.config.c_str(), best, recs[best].result.objective);
     io::WriteBestYaml(OutPath(o.out, "best.yaml"), lc.raw, lc.config.block, names, lc.config.start_source,
                       recs[best].x, comment);
   }
   if (!o.quiet) {
     std::printf("%zu samples (%zu feasible)", recs.size(), fx.size());
     if (best >= 0) std::printf(", best objective %.10g at evaluation %ld", recs[best].result.objective, best);
-    std::printf("\nwrote %s, summary.json%s in %s\n", journal.path().c_str(),
+    std::printf("\nwrote %s, summary.json, scatter.svg%s in %s\n", journal.path().c_str(),
                 s["sensitivity"].is_null() ? "" : ", sensitivity.csv", o.out.c_str());
   }
 }

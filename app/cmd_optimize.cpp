@@ -18,6 +18,7 @@
 #include "app/progress.h"
 #include "hullopt/version.h"
 #include "io/campaign_outputs.h"
+#include "io/campaign_plots.h"
 #include "io/input_error.h"
 #include "optimizer/nlopt_algorithms.h"
 #include "optimizer/nlopt_driver.h"
@@ -38,8 +39,9 @@ nlohmann::json Named(const std::vector<std::string>& names, const std::vector<do
   return j;
 }
 
-nlohmann::json RecordJson(const opt::EvaluationRecord& rec, long evaluation, const opt::CampaignDefinition& def,
-                          const opt::Evaluator& ev, const opt::ConstraintSet& cs) {
+nlohmann::json RecordJson(const opt::EvaluationRecord& rec, long evaluation,
+                          const opt::CampaignDefinition& def, const opt::Evaluator& ev,
+                          const opt::ConstraintSet& cs) {
   nlohmann::json j;
   j["evaluation"] = evaluation;
   j["variables"] = Named(def.VariableNames(), rec.x);
@@ -78,8 +80,9 @@ void RunOptimize(const OptimizeOptions& o) {
     progress.Update(static_cast<long>(journal.records().size()), journal.replayed());
   };
   auto resume_error = [&](const opt::ReplayMismatch& e) {
-    return io::InputError(journal.path() + ": cannot resume, the log does not match this campaign's sequence: " +
-                          e.what() + "; delete the file to start over");
+    return io::InputError(journal.path() +
+                          ": cannot resume, the log does not match this campaign's sequence: " + e.what() +
+                          "; delete the file to start over");
   };
 
   // Baseline (evaluation 0): the base design. A local algorithm must start from a design that exists and
@@ -117,9 +120,10 @@ void RunOptimize(const OptimizeOptions& o) {
   if (rank == 0) PrepareOutputDir(o.out, "optimize", o.config, lc.resolved);
   journal.StartWriting();
   if (rank == 0 && !o.quiet && journal.logged() > 0) {
-    std::fprintf(stderr, "optimize: resuming: %ld evaluations in %s are replayed, not recomputed%s\n",
-                 journal.logged(), journal.path().c_str(),
-                 journal.truncated_tail() ? " (an incomplete last row from an interrupted run was discarded)" : "");
+    std::fprintf(
+        stderr, "optimize: resuming: %ld evaluations in %s are replayed, not recomputed%s\n",
+        journal.logged(), journal.path().c_str(),
+        journal.truncated_tail() ? " (an incomplete last row from an interrupted run was discarded)" : "");
   }
   if (rank == 0) add(baseline);
 
@@ -192,7 +196,8 @@ void RunOptimize(const OptimizeOptions& o) {
   s["seed"] = def.seed;
   s["threads"] = threads;
   s["mpi_ranks"] = size;
-  s["baseline_objective"] = baseline.result.produced ? nlohmann::json(baseline.result.objective) : nlohmann::json();
+  s["baseline_objective"] =
+      baseline.result.produced ? nlohmann::json(baseline.result.objective) : nlohmann::json();
   s["baseline_feasible"] = baseline.feasible;
   s["baseline"] = RecordJson(baseline, 0, def, evaluator, cs);
   if (best >= 0) {
@@ -206,23 +211,28 @@ void RunOptimize(const OptimizeOptions& o) {
   s["runs"] = runs;
   s["wall_time_s"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
   io::WriteJson(OutPath(o.out, "summary.json"), s);
+  io::WriteOptimizePlots(o.out, recs, def.VariableNames(), def.LowerBounds(), def.UpperBounds(),
+                         evaluator.ObjectiveLabel());
   if (best >= 0) {
     char comment[200];
-    std::snprintf(comment, sizeof comment,
-                  "hullopt optimize: best design of %s (evaluation %ld, objective %.10g); base config with the "
-                  "best variable values",
-                  o.config.c_str(), best, recs[best].result.objective);
+    std::snprintf(
+        comment, sizeof comment,
+        "hullopt optimize: best design of %s (evaluation %ld, objective %.10g); base config with the "
+        "best variable values",
+        o.config.c_str(), best, recs[best].result.objective);
     io::WriteBestYaml(OutPath(o.out, "best.yaml"), lc.raw, lc.config.block, def.VariableNames(),
                       lc.config.start_source, recs[best].x, comment);
   }
   if (!o.quiet) {
     if (best >= 0) {
-      std::printf("best objective %.10g at evaluation %ld of %zu (baseline %.10g)\n", recs[best].result.objective,
-                  best, recs.size(), baseline.result.produced ? baseline.result.objective : NAN);
+      std::printf("best objective %.10g at evaluation %ld of %zu (baseline %.10g)\n",
+                  recs[best].result.objective, best, recs.size(),
+                  baseline.result.produced ? baseline.result.objective : NAN);
     } else {
       std::printf("no feasible design found in %zu evaluations\n", recs.size());
     }
-    std::printf("wrote %s, best.yaml, summary.json in %s\n", journal.path().c_str(), o.out.c_str());
+    std::printf("wrote %s, best.yaml, summary.json, convergence.svg, variables.svg in %s\n",
+                journal.path().c_str(), o.out.c_str());
   }
 }
 

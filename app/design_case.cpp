@@ -52,12 +52,13 @@ std::map<std::string, double> DesignCase::Parameters() const {
           {"L_m", h.L_m}};
 }
 
-DesignCase LoadDesignCase(io::YamlMap& root, const std::string& config_file, const std::string& name) {
+DesignCase LoadDesignCase(io::YamlMap& root, const std::string& config_file, const std::string& name,
+                          bool read_speed) {
   DesignCase d;
   d.name = name;
   d.water = io::ParseWater(root);
   const io::HullOptions hull_opts = io::ParseHullConfig(root, d.water);
-  const io::SpeedOptions speed = io::ParseSpeed(root, true);
+  const io::SpeedOptions speed = read_speed ? io::ParseSpeed(root, true) : io::SpeedOptions{};
   d.hull = io::LoadHull(hull_opts, config_file);
   if (root.Has("solver")) {
     io::YamlMap s = root.Map("solver");
@@ -87,7 +88,7 @@ DesignCase LoadDesignCase(io::YamlMap& root, const std::string& config_file, con
   }
   io::YamlMap mass_map = root.MapOrEmpty("mass");
   d.mass = io::ParseMassConfig(mass_map, d.hydrostatics);
-  d.speed_m_s = speed.MetresPerSecond(d.hydrostatics.L_m, d.water.g_m_s2);
+  if (read_speed) d.speed_m_s = speed.MetresPerSecond(d.hydrostatics.L_m, d.water.g_m_s2);
   return d;
 }
 

@@ -33,9 +33,11 @@ struct DesignCase {
 };
 
 /// Reads water, hull, speed, solver (optional: defaults 40 sections × 14 panels, Cs 0, periodic path) and mass
-/// from root and builds the hull. Consumes exactly these keys (the caller calls root.Finish()). Errors are
-/// io::InputError naming the file, key and rule.
-DesignCase LoadDesignCase(io::YamlMap& root, const std::string& config_file, const std::string& name);
+/// from root and builds the hull. Consumes exactly these keys (the caller calls root.Finish()). With
+/// read_speed false the speed is left to the caller (speed_m_s = 0). Errors are io::InputError naming the
+/// file, key and rule.
+DesignCase LoadDesignCase(io::YamlMap& root, const std::string& config_file, const std::string& name,
+                          bool read_speed = true);
 
 /// RAOs of the design at wave frequencies omega_rad_s (increasing, > 0), with the transient Green-function
 /// strip kernel. Cs overrides the config's when >= 0. Throws io::InputError naming the design for a hull that

@@ -1,6 +1,8 @@
 // hullopt: hull-form optimisation for high-speed vessels in head seas.
 #include <CLI/CLI.hpp>
+#include <chrono>
 #include <iostream>
+#include <thread>
 
 #include "app/commands.h"
 #include "app/mpi_context.h"
@@ -26,16 +28,23 @@ int main(int argc, char** argv) {
   hullopt::app::AddExploreCommand(app);
   hullopt::app::AddCalibrateCommand(app);
   int code = 0;
+  std::string message;
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
     code = app.exit(e);
   } catch (const hullopt::io::InputError& e) {
-    std::cerr << "hullopt: error: " << e.what() << "\n";
+    message = std::string("hullopt: error: ") + e.what() + "\n";
     code = 1;
   } catch (const std::exception& e) {
-    std::cerr << "hullopt: internal error: " << e.what() << "\n";
+    message = std::string("hullopt: internal error: ") + e.what() + "\n";
     code = 3;
+  }
+  if (!message.empty()) {
+    // Under MPI an input error usually occurs on every rank: rank 0 reports it and stops the others (below).
+    // Another rank reports only an error of its own, i.e. if rank 0 has not stopped it within the delay.
+    if (hullopt::app::MpiRank() != 0) std::this_thread::sleep_for(std::chrono::milliseconds(500));
+    std::cerr << message;
   }
   // An error on one MPI rank must not leave the others waiting in a collective operation.
   if (code != 0) hullopt::app::MpiAbortIfParallel(code);

@@ -47,7 +47,8 @@ std::vector<std::string> MpiGather(const std::string& text) {
     }
     all.resize(static_cast<std::size_t>(total));
   }
-  MPI_Gatherv(text.data(), n, MPI_CHAR, all.data(), counts.data(), displs.data(), MPI_CHAR, 0, MPI_COMM_WORLD);
+  MPI_Gatherv(text.data(), n, MPI_CHAR, all.data(), counts.data(), displs.data(), MPI_CHAR, 0,
+              MPI_COMM_WORLD);
   std::vector<std::string> out;
   if (rank == 0)
     for (int r = 0; r < size; ++r) out.push_back(all.substr(displs[r], counts[r]));

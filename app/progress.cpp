@@ -22,7 +22,10 @@ std::string FormatDuration(double s) {
 }
 
 Progress::Progress(std::string label, long total, bool enabled)
-    : label_(std::move(label)), total_(std::max(1L, total)), enabled_(enabled), tty_(::isatty(STDERR_FILENO) != 0) {
+    : label_(std::move(label)),
+      total_(std::max(1L, total)),
+      enabled_(enabled),
+      tty_(::isatty(STDERR_FILENO) != 0) {
   start_ = last_draw_ = std::chrono::steady_clock::now();
 }
 
@@ -32,9 +35,9 @@ std::string Progress::Line(long done, long replayed) const {
   const double rate = elapsed > 0 ? computed / elapsed : 0.0;
   const double eta = rate > 0 ? (total_ - done) / rate : NAN;
   char buf[160];
-  std::snprintf(buf, sizeof buf, "%ld/%ld evaluations (%.0f%%), %.3g eval/s, elapsed %s, ETA %s", done, total_,
-                100.0 * std::min(1.0, static_cast<double>(done) / total_), rate, FormatDuration(elapsed).c_str(),
-                FormatDuration(eta).c_str());
+  std::snprintf(buf, sizeof buf, "%ld/%ld evaluations (%.0f%%), %.3g eval/s, elapsed %s, ETA %s", done,
+                total_, 100.0 * std::min(1.0, static_cast<double>(done) / total_), rate,
+                FormatDuration(elapsed).c_str(), FormatDuration(eta).c_str());
   std::string s = buf;
   if (replayed > 0) s += ", " + std::to_string(replayed) + " replayed from the log";
   return s;

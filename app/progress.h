@@ -12,7 +12,8 @@ class Progress {
   /// total: expected number of evaluations (an upper bound for optimisation). enabled = false: silent
   /// (MPI ranks other than 0, --quiet).
   Progress(std::string label, long total, bool enabled = true);
-  /// done: evaluations finished so far, of which `replayed` came from the log (they do not count for the rate).
+  /// done: evaluations finished so far, of which `replayed` came from the log (they do not count for the
+  /// rate).
   void Update(long done, long replayed);
   /// Ends the bar with a final line.
   void Finish(long done, long replayed);

@@ -44,8 +44,8 @@ CampaignConfig ReadCampaignConfig(YamlMap& root, const YAML::Node& raw_root, Cam
       (raw_root["hull"] && raw_root["hull"].IsMap()) ? raw_root["hull"]["parametric"] : YAML::Node();
   for (const auto& name : vars.Keys()) {
     const auto bounds = vars.Numbers(name);
-    if (bounds.size() != 2) vars.Fail(name, "must be [lower, upper], got " + std::to_string(bounds.size()) +
-                                                " numbers");
+    if (bounds.size() != 2)
+      vars.Fail(name, "must be [lower, upper], got " + std::to_string(bounds.size()) + " numbers");
     opt::DesignVariable v;
     v.name = name;
     v.lower = bounds[0];
@@ -77,8 +77,9 @@ CampaignConfig ReadCampaignConfig(YamlMap& root, const YAML::Node& raw_root, Cam
     opt::Constraint c;
     c.key = key;
     if (!opt::ParseConstraintKey(key, &c.quantity, &c.kind)) {
-      cons.Fail(key, "constraint keys are <quantity>_max or <quantity>_min, optionally followed by a unit "
-                     "(e.g. L_max_m, Cvp_min)");
+      cons.Fail(key,
+                "constraint keys are <quantity>_max or <quantity>_min, optionally followed by a unit "
+                "(e.g. L_max_m, Cvp_min)");
     }
     c.limit = cons.Number(key);
     d.constraints.push_back(c);

@@ -44,8 +44,8 @@ struct CampaignConfig {
 };
 
 /// Reads the campaign block of `root` (marking it consumed; the `objective` key is left for the evaluator
-/// factory: *block_out receives the block's map for that). raw_root is the same file as a plain YAML tree, used to look up
-/// base values in hull.parametric without consuming the hull block (the evaluator reads it).
+/// factory: *block_out receives the block's map for that). raw_root is the same file as a plain YAML tree,
+/// used to look up base values in hull.parametric without consuming the hull block (the evaluator reads it).
 /// Throws InputError for a missing block, wrong types, or a missing base value.
 CampaignConfig ReadCampaignConfig(YamlMap& root, const YAML::Node& raw_root, CampaignCommand command,
                                   std::optional<YamlMap>* block_out);

@@ -1,10 +1,10 @@
 #pragma once
 // Files a campaign leaves besides its history: summary.json, best.yaml, sensitivity.csv, and the config
 // fingerprint that guards resuming.
-#include <nlohmann/json.hpp>
 #include <yaml-cpp/yaml.h>
 
 #include <cstdint>
+#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 

@@ -81,7 +81,8 @@ HistoryRow ParseHistoryRow(const std::string& line, const HistoryLayout& layout,
   auto bad = [&](const std::string& why) {
     throw InputError(where + ": " + why + " (the file is damaged; delete it to start the campaign over)");
   };
-  if (f.size() != ncols) bad("expected " + std::to_string(ncols) + " columns, found " + std::to_string(f.size()));
+  if (f.size() != ncols)
+    bad("expected " + std::to_string(ncols) + " columns, found " + std::to_string(f.size()));
   auto num = [&](const std::string& s) {
     char* e = nullptr;
     const double v = std::strtod(s.c_str(), &e);
@@ -146,8 +147,9 @@ HistoryFile ParseHistory(const std::string& text, const std::string& path, const
     const std::string where = path + ":" + std::to_string(line_no);
     HistoryRow row = ParseHistoryRow(text.substr(pos, end - pos), layout, where);
     if (row.evaluation != static_cast<long>(out.rows.size())) {
-      throw InputError(where + ": evaluation " + std::to_string(row.evaluation) + " out of sequence (expected " +
-                       std::to_string(out.rows.size()) + "; the file is damaged)");
+      throw InputError(where + ": evaluation " + std::to_string(row.evaluation) +
+                       " out of sequence (expected " + std::to_string(out.rows.size()) +
+                       "; the file is damaged)");
     }
     out.rows.push_back(std::move(row));
     out.valid_bytes = end + 1;

@@ -35,10 +35,10 @@ struct HistoryRow {
 };
 
 struct HistoryFile {
-  bool exists = false;              ///< file present with at least a complete header line
-  std::vector<HistoryRow> rows;     ///< complete rows, in file order
-  std::size_t valid_bytes = 0;      ///< length of the header + complete rows
-  bool truncated_tail = false;      ///< an incomplete last line (killed mid-write) was found and discarded
+  bool exists = false;           ///< file present with at least a complete header line
+  std::vector<HistoryRow> rows;  ///< complete rows, in file order
+  std::size_t valid_bytes = 0;   ///< length of the header + complete rows
+  bool truncated_tail = false;   ///< an incomplete last line (killed mid-write) was found and discarded
 };
 
 /// Reads a history/samples file written with `layout`. A missing or empty file gives exists = false. Throws

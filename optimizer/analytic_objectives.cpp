@@ -17,8 +17,9 @@ bool AnalyticObjectiveOptions::IsValid(std::string* error) const {
     return false;
   }
   if (dimension < 1 || (function == "rosenbrock" && dimension < 2)) {
-    if (error) *error = "analytic " + function + ": needs at least " + (function == "rosenbrock" ? "2" : "1") +
-                        " design variables, got " + std::to_string(dimension);
+    if (error)
+      *error = "analytic " + function + ": needs at least " + (function == "rosenbrock" ? "2" : "1") +
+               " design variables, got " + std::to_string(dimension);
     return false;
   }
   if (!(eval_delay_ms >= 0.0) || eval_delay_ms > 60000.0) {

@@ -20,9 +20,9 @@ namespace hullopt::opt {
 
 struct AnalyticObjectiveOptions {
   std::string function = "sphere";  ///< sphere | rosenbrock | rastrigin | linear
-  int dimension = 2;                 ///< number of design variables (>= 1; rosenbrock >= 2)
-  double eval_delay_ms = 0.0;        ///< [ms] sleep per evaluation, to imitate a slow objective (tests)
-  double refuse_above_sum = 1e300;   ///< designs with Σ x_i above this are refused (tests refusal handling)
+  int dimension = 2;                ///< number of design variables (>= 1; rosenbrock >= 2)
+  double eval_delay_ms = 0.0;       ///< [ms] sleep per evaluation, to imitate a slow objective (tests)
+  double refuse_above_sum = 1e300;  ///< designs with Σ x_i above this are refused (tests refusal handling)
   bool IsValid(std::string* error) const;
 };
 
@@ -38,6 +38,7 @@ class AnalyticEvaluator : public Evaluator {
   /// Any name works for the functions; the test objectives still refuse names outside x1..x16 and a..z, so
   /// that the "unknown variable" check of campaigns can be exercised without the hull generator.
   std::vector<std::string> VariableNames() const override;
+  std::string ObjectiveLabel() const override { return options_.function + " (analytic test objective)"; }
 
  private:
   AnalyticObjectiveOptions options_;

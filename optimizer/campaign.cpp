@@ -85,8 +85,8 @@ bool CampaignDefinition::IsValid(std::string* error) const {
     if (Contains(seen, v.name)) return Fail(error, "variables: '" + v.name + "' is listed twice");
     seen.push_back(v.name);
     if (!known_variables.empty() && !Contains(known_variables, v.name)) {
-      return Fail(error, "variables: unknown design variable '" + v.name + "' (known: " +
-                             Join(known_variables) + ")");
+      return Fail(error, "variables: unknown design variable '" + v.name +
+                             "' (known: " + Join(known_variables) + ")");
     }
     if (!std::isfinite(v.lower) || !std::isfinite(v.upper)) {
       return Fail(error, "variables." + v.name + ": bounds must be finite numbers");
@@ -100,13 +100,13 @@ bool CampaignDefinition::IsValid(std::string* error) const {
                              "] are empty (lower == upper); fix the value in the base design instead");
     }
     if (!std::isfinite(v.start) || v.start < v.lower || v.start > v.upper) {
-      return Fail(error, "variables." + v.name + ": start value " + Num(v.start) + " is outside the bounds [" +
-                             Num(v.lower) + ", " + Num(v.upper) + "]");
+      return Fail(error, "variables." + v.name + ": start value " + Num(v.start) +
+                             " is outside the bounds [" + Num(v.lower) + ", " + Num(v.upper) + "]");
     }
   }
   if (!IsNloptAlgorithm(algorithm)) {
-    return Fail(error, "algorithm '" + algorithm + "' is not an NLopt algorithm (usable: " +
-                           Join(CampaignAlgorithmNames()) + ")");
+    return Fail(error, "algorithm '" + algorithm +
+                           "' is not an NLopt algorithm (usable: " + Join(CampaignAlgorithmNames()) + ")");
   }
   if (NeedsGradient(algorithm)) {
     return Fail(error, "algorithm '" + algorithm +
@@ -114,9 +114,10 @@ bool CampaignDefinition::IsValid(std::string* error) const {
                            "algorithm (LN_* or GN_*)");
   }
   if (NeedsSubsidiaryOptimizer(algorithm)) {
-    return Fail(error, "algorithm '" + algorithm +
-                           "' needs a subsidiary local optimiser, which campaigns do not configure; use one of: " +
-                           Join(CampaignAlgorithmNames()));
+    return Fail(error,
+                "algorithm '" + algorithm +
+                    "' needs a subsidiary local optimiser, which campaigns do not configure; use one of: " +
+                    Join(CampaignAlgorithmNames()));
   }
   if (stopping.max_evaluations < 1) {
     return Fail(error, "max_evaluations = " + std::to_string(stopping.max_evaluations) + ": must be >= 1");
@@ -137,7 +138,8 @@ bool CampaignDefinition::IsValid(std::string* error) const {
   std::map<std::string, double> max_of, min_of;
   std::map<std::string, std::string> max_key, min_key;
   for (const auto& c : constraints) {
-    if (!std::isfinite(c.limit)) return Fail(error, "constraints." + c.key + ": limit must be a finite number");
+    if (!std::isfinite(c.limit))
+      return Fail(error, "constraints." + c.key + ": limit must be a finite number");
     const bool is_variable = Contains(seen, c.quantity);
     if (!is_variable && !known_quantities.empty() && !Contains(known_quantities, c.quantity)) {
       return Fail(error, "constraints." + c.key + ": unknown quantity '" + c.quantity +
@@ -167,15 +169,17 @@ bool CampaignDefinition::IsValid(std::string* error) const {
       const bool start_violates = c.kind == Constraint::Kind::kMax ? v.start > c.limit : v.start < c.limit;
       if (start_violates && !IsGlobal(algorithm)) {
         return Fail(error, "constraints." + c.key + " = " + Num(c.limit) + ": the start value of '" + v.name +
-                               "' (" + Num(v.start) + ") violates it; a local algorithm needs a feasible start");
+                               "' (" + Num(v.start) +
+                               ") violates it; a local algorithm needs a feasible start");
       }
     }
   }
   for (const auto& [q, hi] : max_of) {
     auto it = min_of.find(q);
     if (it != min_of.end() && it->second > hi) {
-      return Fail(error, "constraints " + min_key[q] + " = " + Num(it->second) + " and " + max_key[q] + " = " +
-                             Num(hi) + " contradict each other (minimum above maximum of '" + q + "')");
+      return Fail(error, "constraints " + min_key[q] + " = " + Num(it->second) + " and " + max_key[q] +
+                             " = " + Num(hi) + " contradict each other (minimum above maximum of '" + q +
+                             "')");
     }
   }
   return true;

@@ -1,8 +1,8 @@
 #pragma once
 // What a campaign is asked to do, independent of any file format: the free design variables with bounds and
-// start values, the constraints on named quantities, the NLopt algorithm and stopping criteria, multistart and
-// the random seed. Filled by io/campaign_config from YAML; validated here so that every bad input is refused
-// before the first evaluation.
+// start values, the constraints on named quantities, the NLopt algorithm and stopping criteria, multistart
+// and the random seed. Filled by io/campaign_config from YAML; validated here so that every bad input is
+// refused before the first evaluation.
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -44,8 +44,8 @@ struct CampaignDefinition {
   std::vector<Constraint> constraints;
   std::string algorithm = "LN_COBYLA";  ///< NLopt algorithm name
   StoppingCriteria stopping;
-  int starts = 1;                       ///< multistart runs; run 0 starts at the base design
-  std::uint64_t seed = 1;               ///< seeds multistart start points, stochastic algorithms and LHS
+  int starts = 1;          ///< multistart runs; run 0 starts at the base design
+  std::uint64_t seed = 1;  ///< seeds multistart start points, stochastic algorithms and LHS
   /// Penalty weight for the penalty method (algorithms without inequality constraints): the objective of
   /// a point violating constraints becomes f + penalty_weight·Σ max(0, g_j)/scale_j. [objective units]
   double penalty_weight = 1000.0;
@@ -59,9 +59,9 @@ struct CampaignDefinition {
   std::vector<std::string> known_variables;
 
   /// Checks everything that can be checked without evaluating: variables known, bounds ordered and non-empty,
-  /// start inside bounds, algorithm a derivative-free NLopt algorithm, stopping criteria positive, constraints
-  /// on known quantities and not contradictory (min > max on one quantity, or a limit on a design variable
-  /// that excludes its whole range). The message names the item, the value and the rule.
+  /// start inside bounds, algorithm a derivative-free NLopt algorithm, stopping criteria positive,
+  /// constraints on known quantities and not contradictory (min > max on one quantity, or a limit on a design
+  /// variable that excludes its whole range). The message names the item, the value and the rule.
   bool IsValid(std::string* error) const;
 
   std::vector<double> StartPoint() const;

@@ -6,7 +6,8 @@
 
 namespace hullopt::opt {
 
-ConstraintSet::ConstraintSet(const CampaignDefinition& campaign, const std::vector<std::string>& quantity_names) {
+ConstraintSet::ConstraintSet(const CampaignDefinition& campaign,
+                             const std::vector<std::string>& quantity_names) {
   const auto vars = campaign.VariableNames();
   for (const auto& c : campaign.constraints) {
     Bound b;
@@ -63,7 +64,8 @@ std::vector<double> ConstraintSet::ReportedValues(const EvalResult& r) const {
 std::vector<double> ConstraintSet::QuantitiesFromReported(const std::vector<double>& reported,
                                                           std::size_t n) const {
   std::vector<double> q(n, std::nan(""));
-  for (std::size_t i = 0; i < reported_index_.size() && i < reported.size(); ++i) q[reported_index_[i]] = reported[i];
+  for (std::size_t i = 0; i < reported_index_.size() && i < reported.size(); ++i)
+    q[reported_index_[i]] = reported[i];
   return q;
 }
 

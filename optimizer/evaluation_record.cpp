@@ -11,7 +11,8 @@ const EvaluationRecord* LookupReplay(const ReplayLookup& lookup, int run, int st
   const EvaluationRecord* rec = lookup(run, step);
   if (rec == nullptr) return nullptr;
   bool same = rec->x.size() == x.size();
-  for (std::size_t i = 0; same && i < x.size(); ++i) same = std::memcmp(&rec->x[i], &x[i], sizeof(double)) == 0;
+  for (std::size_t i = 0; same && i < x.size(); ++i)
+    same = std::memcmp(&rec->x[i], &x[i], sizeof(double)) == 0;
   if (!same) {
     std::ostringstream s;
     s.precision(17);

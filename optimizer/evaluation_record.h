@@ -10,9 +10,9 @@
 namespace hullopt::opt {
 
 struct EvaluationRecord {
-  int run = 0;             ///< multistart run (0-based); for exploration always 0
-  int step = 0;            ///< position in its run's deterministic sequence (0-based)
-  std::vector<double> x;   ///< free design variables, in campaign order
+  int run = 0;            ///< multistart run (0-based); for exploration always 0
+  int step = 0;           ///< position in its run's deterministic sequence (0-based)
+  std::vector<double> x;  ///< free design variables, in campaign order
   EvalResult result;
   bool feasible = false;   ///< produced and every constraint satisfied
   double wall_time_s = 0;  ///< [s] wall time of the evaluation when it was computed
@@ -34,6 +34,7 @@ class ReplayMismatch : public std::runtime_error {
 
 /// Returns the logged record for (run, step) after checking that its inputs equal x bit for bit; nullptr if
 /// there is none. Throws ReplayMismatch when they differ.
-const EvaluationRecord* LookupReplay(const ReplayLookup& lookup, int run, int step, const std::vector<double>& x);
+const EvaluationRecord* LookupReplay(const ReplayLookup& lookup, int run, int step,
+                                     const std::vector<double>& x);
 
 }  // namespace hullopt::opt

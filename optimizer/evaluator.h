@@ -1,7 +1,8 @@
 #pragma once
 // The abstract evaluation a campaign optimises or explores: design variables in, objective and named
 // quantities out. The campaign machinery (NLopt driver, sampling, resume, parallel runs) only sees this
-// interface; the MSI evaluator (hull generator + motions + seas) and the analytic test objectives implement it.
+// interface; the MSI evaluator (hull generator + motions + seas) and the analytic test objectives implement
+// it.
 #include <string>
 #include <vector>
 
@@ -36,6 +37,8 @@ class Evaluator {
   virtual std::vector<std::string> SeaNames() const = 0;
   /// Names of the quantities of EvalResult::quantities that constraints may refer to.
   virtual std::vector<std::string> QuantityNames() const = 0;
+  /// Axis label of the objective with its unit, for plots (e.g. "mean MSI [%]").
+  virtual std::string ObjectiveLabel() const { return "objective"; }
   /// Names the free design variables may take (e.g. the generator's variables); empty = any name.
   virtual std::vector<std::string> VariableNames() const { return {}; }
   virtual bool IsThreadSafe() const { return true; }

@@ -41,8 +41,8 @@ bool IsGlobal(const std::string& name) { return StartsWith(name, "G"); }
 
 bool SupportsInequalityConstraints(const std::string& name) {
   // NLopt reference, "Nonlinear constraints": COBYLA, ISRES, ORIG_DIRECT(_L), AGS, MMA, CCSAQ, SLSQP, AUGLAG.
-  static const char* const kWith[] = {"LN_COBYLA", "GN_ISRES", "GN_ORIG_DIRECT", "GN_ORIG_DIRECT_L", "GN_AGS",
-                                      "LD_MMA",    "LD_CCSAQ", "LD_SLSQP"};
+  static const char* const kWith[] = {"LN_COBYLA", "GN_ISRES", "GN_ORIG_DIRECT", "GN_ORIG_DIRECT_L",
+                                      "GN_AGS",    "LD_MMA",   "LD_CCSAQ",       "LD_SLSQP"};
   for (const char* w : kWith)
     if (name == w) return true;
   return StartsWith(name, "AUGLAG");

@@ -15,13 +15,20 @@ namespace {
 
 const char* ResultName(nlopt::result r) {
   switch (r) {
-    case nlopt::SUCCESS: return "SUCCESS";
-    case nlopt::STOPVAL_REACHED: return "STOPVAL_REACHED";
-    case nlopt::FTOL_REACHED: return "FTOL_REACHED";
-    case nlopt::XTOL_REACHED: return "XTOL_REACHED";
-    case nlopt::MAXEVAL_REACHED: return "MAXEVAL_REACHED";
-    case nlopt::MAXTIME_REACHED: return "MAXTIME_REACHED";
-    default: return "FAILURE";
+    case nlopt::SUCCESS:
+      return "SUCCESS";
+    case nlopt::STOPVAL_REACHED:
+      return "STOPVAL_REACHED";
+    case nlopt::FTOL_REACHED:
+      return "FTOL_REACHED";
+    case nlopt::XTOL_REACHED:
+      return "XTOL_REACHED";
+    case nlopt::MAXEVAL_REACHED:
+      return "MAXEVAL_REACHED";
+    case nlopt::MAXTIME_REACHED:
+      return "MAXTIME_REACHED";
+    default:
+      return "FAILURE";
   }
 }
 

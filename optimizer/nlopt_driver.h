@@ -1,10 +1,10 @@
 #pragma once
-// Runs a campaign's NLopt optimisation against an Evaluator: baseline evaluation, multistart runs, constraints
-// through NLopt inequality constraints where the algorithm supports them (COBYLA, ISRES, ORIG_DIRECT, AGS),
-// through NLopt's augmented-Lagrangian penalty (AUGLAG around the chosen algorithm) for other local
-// algorithms (BOBYQA, SBPLX, NELDERMEAD, ...) and an exact L1 penalty for other global ones, generator
-// refusals as penalised infeasible points, and exact replay of logged evaluations (resume). No I/O: each
-// evaluation goes to a RecordSink supplied by the caller.
+// Runs a campaign's NLopt optimisation against an Evaluator: baseline evaluation, multistart runs,
+// constraints through NLopt inequality constraints where the algorithm supports them (COBYLA, ISRES,
+// ORIG_DIRECT, AGS), through NLopt's augmented-Lagrangian penalty (AUGLAG around the chosen algorithm) for
+// other local algorithms (BOBYQA, SBPLX, NELDERMEAD, ...) and an exact L1 penalty for other global ones,
+// generator refusals as penalised infeasible points, and exact replay of logged evaluations (resume). No I/O:
+// each evaluation goes to a RecordSink supplied by the caller.
 //
 // Determinism: for a given campaign (including the seed) the sequence of evaluated points is fixed; replaying
 // logged results reproduces it bit for bit, so a resumed campaign continues exactly where it stopped.
@@ -21,13 +21,13 @@ namespace hullopt::opt {
 /// Outcome of one multistart run.
 struct RunResult {
   int run = 0;
-  std::vector<double> start;       ///< start point
-  std::vector<double> best_x;      ///< best feasible point of the run (start if none feasible)
-  double best_objective = 0.0;     ///< its objective (not penalised); meaningful if found_feasible
+  std::vector<double> start;    ///< start point
+  std::vector<double> best_x;   ///< best feasible point of the run (start if none feasible)
+  double best_objective = 0.0;  ///< its objective (not penalised); meaningful if found_feasible
   bool found_feasible = false;
-  int evaluations = 0;             ///< evaluations of this run (computed + replayed)
-  int replayed = 0;                ///< of which replayed from the log
-  std::string status;              ///< NLopt's stopping reason ("MAXEVAL_REACHED", "XTOL_REACHED", ...)
+  int evaluations = 0;  ///< evaluations of this run (computed + replayed)
+  int replayed = 0;     ///< of which replayed from the log
+  std::string status;   ///< NLopt's stopping reason ("MAXEVAL_REACHED", "XTOL_REACHED", ...)
 };
 
 class NloptDriver {
@@ -43,8 +43,8 @@ class NloptDriver {
   EvaluationRecord EvaluateBaseline(const ReplayLookup& replay, const RecordSink& sink);
 
   /// Runs multistart run `run` to its stopping criteria. Every evaluation (replayed or computed) goes to sink
-  /// in order. Throws ReplayMismatch if the log disagrees with the sequence, and rethrows any non-domain error
-  /// of the evaluator.
+  /// in order. Throws ReplayMismatch if the log disagrees with the sequence, and rethrows any non-domain
+  /// error of the evaluator.
   RunResult Run(int run, const ReplayLookup& replay, const RecordSink& sink);
 
   const ConstraintSet& constraints() const { return constraints_; }

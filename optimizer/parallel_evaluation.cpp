@@ -6,11 +6,11 @@
 
 namespace hullopt::opt {
 
-void EvaluateInOrder(Evaluator& evaluator, const std::vector<std::vector<double>>& xs, int first, int last,
-                     int threads,
-                     const std::function<EvaluationRecord(int index, const std::vector<double>& x,
-                                                          const EvalResult& r, double wall_time_s)>& make_record,
-                     const RecordSink& sink) {
+void EvaluateInOrder(
+    Evaluator& evaluator, const std::vector<std::vector<double>>& xs, int first, int last, int threads,
+    const std::function<EvaluationRecord(int index, const std::vector<double>& x, const EvalResult& r,
+                                         double wall_time_s)>& make_record,
+    const RecordSink& sink) {
   const int count = last - first;
   if (count <= 0) return;
   std::vector<EvaluationRecord> done(count);

@@ -13,10 +13,10 @@ namespace hullopt::opt {
 /// thread-safe). `make_record` turns (index, x, result, wall time) into the record (feasibility, run/step);
 /// `sink` receives the records in index order, one at a time (serialised), as soon as all earlier ones are
 /// done. Exceptions other than generator refusals are rethrown after the loop.
-void EvaluateInOrder(Evaluator& evaluator, const std::vector<std::vector<double>>& xs, int first, int last,
-                     int threads,
-                     const std::function<EvaluationRecord(int index, const std::vector<double>& x,
-                                                          const EvalResult& r, double wall_time_s)>& make_record,
-                     const RecordSink& sink);
+void EvaluateInOrder(
+    Evaluator& evaluator, const std::vector<std::vector<double>>& xs, int first, int last, int threads,
+    const std::function<EvaluationRecord(int index, const std::vector<double>& x, const EvalResult& r,
+                                         double wall_time_s)>& make_record,
+    const RecordSink& sink);
 
 }  // namespace hullopt::opt

@@ -37,7 +37,8 @@ SensitivityResult ComputeSensitivity(const std::vector<std::vector<double>>& x, 
       throw std::invalid_argument("sensitivity: variable '" + names[j] + "' does not vary over the samples");
     }
   }
-  if (!standardise(Y)) throw std::invalid_argument("sensitivity: the objective does not vary over the samples");
+  if (!standardise(Y))
+    throw std::invalid_argument("sensitivity: the objective does not vary over the samples");
 
   SensitivityResult out;
   out.samples = n;

@@ -141,8 +141,17 @@ Eigen::MatrixXd StripOperators::Solve(int n, const Eigen::MatrixXd& rhs) const {
   return lu_[invariant_ ? (n == 0 ? 0 : 1) : n].solve(rhs);
 }
 
+namespace {
+void RequireStart(bool has_start) {
+  if (!has_start)
+    throw std::logic_error(
+        "strip operators built steady_state_only: no memory of the first interval for marching");
+}
+}  // namespace
+
 const Eigen::MatrixXd& StripOperators::Memory(int n, int k) const {
   if (!invariant_) return memory_[n][k];
+  if (k == 0) RequireStart(has_start_);
   return k == 0 ? memory_[1][n] : memory_[0][n - k];
 }
 
@@ -152,6 +161,7 @@ const Eigen::RowVectorXd& StripOperators::MomentumCurrent(int n) const {
 
 const Eigen::RowVectorXd& StripOperators::MomentumMemory(int n, int k) const {
   if (!invariant_) return momentum_memory_[n][k];
+  if (k == 0) RequireStart(has_start_);
   return k == 0 ? momentum_memory_[1][n] : momentum_memory_[0][n - k];
 }
 
@@ -219,7 +229,8 @@ StripOperators BuildStripOperators(const std::vector<std::vector<Panel>>& panels
 }
 
 StripOperators BuildFixedSectionOperators(const std::vector<Panel>& panels, int steps, double dt, double rho,
-                                          double g, const StripOperatorOptions& options) {
+                                          double g, const StripOperatorOptions& options,
+                                          bool steady_state_only) {
   CheckScalars(dt, rho, g, options);
   CheckPanels(panels, 0);
   if (steps < 1) throw std::invalid_argument("steps must be >= 1, got " + std::to_string(steps));
@@ -227,12 +238,14 @@ StripOperators BuildFixedSectionOperators(const std::vector<Panel>& panels, int 
   const int N = steps;
   StripOperators ops;
   ops.steps_ = N, ops.dt_ = dt, ops.rho_ = rho, ops.g_ = g, ops.invariant_ = true;
+  ops.has_start_ = !steady_state_only;
   ops.panels_ = {panels};
   const FieldSet f = MakeFieldSet(panels, options.field_points_per_panel);
   // Levels: half[m] at (m + ½)dt, m = 0..N−1; whole[n] at n·dt, n = 1..N−1.
   std::vector<Level> half(N), whole(N);
+  const int jobs = steady_state_only ? N : 2 * N - 1;
 #pragma omp parallel for schedule(dynamic, 1)
-  for (int job = 0; job < 2 * N - 1; ++job) {
+  for (int job = 0; job < jobs; ++job) {
     if (job < N)
       half[job] = ComputeLevel(f, panels, (job + 0.5) * dt, g, rho, options.potential_rel_tol);
     else
@@ -251,6 +264,7 @@ StripOperators BuildFixedSectionOperators(const std::vector<Panel>& panels, int 
   for (int l = 1; l < N; ++l) {
     ops.memory_[0][l] = half[l].nv - half[l - 1].nv;
     ops.momentum_memory_[0][l] = half[l].pl - half[l - 1].pl;
+    if (steady_state_only) continue;
     ops.memory_[1][l] = whole[l].nv - half[l - 1].nv;
     ops.momentum_memory_[1][l] = whole[l].pl - half[l - 1].pl;
   }

@@ -61,10 +61,11 @@ class StripOperators {
   friend StripOperators BuildStripOperators(const std::vector<std::vector<Panel>>&, double, double, double,
                                             const StripOperatorOptions&);
   friend StripOperators BuildFixedSectionOperators(const std::vector<Panel>&, int, double, double, double,
-                                                   const StripOperatorOptions&);
+                                                   const StripOperatorOptions&, bool);
   int steps_ = 0;
   double dt_ = 0, rho_ = 0, g_ = 0;
   bool invariant_ = false;
+  bool has_start_ = true;  // time-invariant: memory of the first half interval available
   std::vector<std::vector<Panel>> panels_;
   // General: index n (system, lu, momentum_current), [n][k] (memory, momentum_memory).
   // Time-invariant: system/lu/momentum_current [0] for n = 0 (no self memory) and [1] for n >= 1;
@@ -84,9 +85,12 @@ class StripOperators {
 StripOperators BuildStripOperators(const std::vector<std::vector<Panel>>& panels_per_step, double dt,
                                    double rho, double g, const StripOperatorOptions& options = {});
 
-/// Operators of a section that does not change, for `steps` steps (memory by lag only; cost O(N
-/// P²·quadrature)).
+/// Operators of a section that does not change, for `steps` steps (memory by lag only; cost O(N P²) kernel
+/// quadratures). steady_state_only: skip the memory of the first half interval seen at later steps (half the
+/// cost and storage); the operators then serve LagMemory/LagMomentum (steady-state transforms) but not time
+/// marching from rest (Memory(n, 0) and MomentumMemory(n, 0) throw std::logic_error).
 StripOperators BuildFixedSectionOperators(const std::vector<Panel>& panels, int steps, double dt, double rho,
-                                          double g, const StripOperatorOptions& options = {});
+                                          double g, const StripOperatorOptions& options = {},
+                                          bool steady_state_only = false);
 
 }  // namespace hullopt::sk

@@ -48,7 +48,12 @@ bool TimeDomainSectionOptions::IsValid(std::string* error) const {
   return operators.IsValid(error);
 }
 
-cd SteadyHeaveMomentum(const StripOperators& ops, double omega, int lags) {
+namespace {
+struct SteadySums {
+  Eigen::MatrixXcd K;
+  Eigen::RowVectorXcd mom;
+};
+SteadySums Sums(const StripOperators& ops, double omega, int lags) {
   if (!ops.TimeInvariant())
     throw std::invalid_argument("steady heave response needs time-invariant operators");
   if (lags < 1 || lags >= ops.Steps())
@@ -56,14 +61,13 @@ cd SteadyHeaveMomentum(const StripOperators& ops, double omega, int lags) {
   const auto& panels = ops.PanelsAt(1);
   const double dt = ops.Dt();
   const int P = static_cast<int>(panels.size());
-  Eigen::MatrixXcd K = ops.System(1).cast<cd>();
-  Eigen::RowVectorXcd mom = ops.MomentumCurrent(1).cast<cd>();
+  SteadySums s{ops.System(1).cast<cd>(), ops.MomentumCurrent(1).cast<cd>()};
   const cd zstep = std::exp(cd(0.0, -omega * dt));
   cd z = 1.0;
   for (int l = 1; l <= lags; ++l) {
     z *= zstep;
-    K -= z * ops.LagMemory(l).cast<cd>();
-    mom += z * ops.LagMomentum(l).cast<cd>();
+    s.K -= z * ops.LagMemory(l).cast<cd>();
+    s.mom += z * ops.LagMomentum(l).cast<cd>();
   }
   // Tail l > lags: G~ → 4/t (theory notes §1.4), so the interval integral of the potential is 4
   // ln((l+½)/(l−½)) times the panel length, the same at every field point; Σ_{l>L} z^l ln((l+½)/(l−½)) ≈
@@ -71,9 +75,35 @@ cd SteadyHeaveMomentum(const StripOperators& ops, double omega, int lags) {
   double W = 0;  // Σ L_i n_z,i over the field panels
   for (const Panel& p : panels) W += p.y2 - p.y1;
   const cd tail = ExponentialIntegralE1(cd(0.0, omega * dt * (lags + 0.5)));
-  for (int j = 0; j < P; ++j) mom(j) += -(ops.Rho() / (2 * M_PI)) * W * panels[j].Length() * 4.0 * tail;
-  const Eigen::VectorXcd sigma = K.partialPivLu().solve(HeaveNormalVelocity(panels).cast<cd>());
-  return mom * sigma;
+  for (int j = 0; j < P; ++j) s.mom(j) += -(ops.Rho() / (2 * M_PI)) * W * panels[j].Length() * 4.0 * tail;
+  return s;
+}
+}  // namespace
+
+Eigen::VectorXcd SteadyHeaveSources(const StripOperators& ops, double omega, int lags) {
+  const SteadySums s = Sums(ops, omega, lags);
+  return s.K.partialPivLu().solve(HeaveNormalVelocity(ops.PanelsAt(1)).cast<cd>());
+}
+
+cd SteadyHeaveMomentum(const StripOperators& ops, double omega, int lags) {
+  const SteadySums s = Sums(ops, omega, lags);
+  return s.mom * s.K.partialPivLu().solve(HeaveNormalVelocity(ops.PanelsAt(1)).cast<cd>());
+}
+
+std::array<double, 2> FarFieldWaveAmplitudes(const std::vector<Panel>& panels, const Eigen::VectorXcd& sigma,
+                                             double omega, double g) {
+  const double K = omega * omega / g;
+  cd q[2] = {0.0, 0.0};
+  for (std::size_t j = 0; j < panels.size(); ++j) {
+    const Panel& p = panels[j];
+    const double L = p.Length(), ca = (p.y2 - p.y1) / L, sa = (p.z2 - p.z1) / L;
+    for (int side = 0; side < 2; ++side) {
+      const double sgn = side == 0 ? 1.0 : -1.0;  // e^{Kζ + i sgn K η}
+      const cd c = K * cd(p.z1, sgn * p.y1), d = K * cd(sa, sgn * ca);
+      q[side] += sigma(j) * std::exp(c) * (std::exp(d * L) - 1.0) / d;
+    }
+  }
+  return {omega / g * std::abs(q[0]), omega / g * std::abs(q[1])};
 }
 
 HeaveCoefficients TimeDomainHeaveCoefficients(const std::vector<Panel>& panels,
@@ -102,7 +132,8 @@ HeaveCoefficients TimeDomainHeaveCoefficients(const std::vector<Panel>& panels,
   // of it.
   horizon = std::max(horizon, 40.0 * std::sqrt(r_max / g));
   const int lags = std::min(options.max_lags, static_cast<int>(std::ceil(horizon / dt)));
-  const StripOperators ops = BuildFixedSectionOperators(panels, lags + 1, dt, rho, g, options.operators);
+  const StripOperators ops =
+      BuildFixedSectionOperators(panels, lags + 1, dt, rho, g, options.operators, /*steady_state_only=*/true);
   HeaveCoefficients out;
   out.dt_s = dt;
   out.lags = lags;
@@ -113,6 +144,8 @@ HeaveCoefficients TimeDomainHeaveCoefficients(const std::vector<Panel>& panels,
     out.omega_rad_s.push_back(w);
     out.a33_kg_per_m.push_back(-I.real());
     out.b33_kg_per_m_s.push_back(w * I.imag());
+    const auto A = FarFieldWaveAmplitudes(panels, SteadyHeaveSources(ops, w, lags), w, g);
+    out.b33_energy_kg_per_m_s.push_back(rho * g * g * (A[0] * A[0] + A[1] * A[1]) / (2 * w));
   }
   return out;
 }

@@ -11,6 +11,9 @@
 // beyond it the memory potential is the position-independent 4/t tail of G~, summed in closed form through
 // the complex exponential integral E1. The force f = dI/dt = iω Î per unit heave velocity gives
 //   a33 = −Re Î [kg/m],   b33 = ω Im Î [kg/(m s)]   (f = −a33 ẍ3 − b33 ẋ3).
+#include <Eigen/Dense>
+#include <array>
+#include <complex>
 #include <string>
 #include <vector>
 
@@ -31,6 +34,9 @@ struct HeaveCoefficients {
   std::vector<double> omega_rad_s;
   std::vector<double> a33_kg_per_m;
   std::vector<double> b33_kg_per_m_s;
+  /// Damping from the far-field radiated wave energy flux of the same solution, ρg²(|A+|² + |A−|²)/(2ω): an
+  /// energy-balance check of b33 (agrees to the O(1/N) panel error).
+  std::vector<double> b33_energy_kg_per_m_s;
   double a33_infinite_kg_per_m = 0.0;  ///< impulsive (t = 0+) added mass: the ω → ∞ limit
   double dt_s = 0.0;                   ///< time step used
   int lags = 0;                        ///< lag horizon used (steps)
@@ -41,6 +47,17 @@ struct HeaveCoefficients {
 HeaveCoefficients TimeDomainHeaveCoefficients(const std::vector<Panel>& panels,
                                               const std::vector<double>& omega_rad_s, double rho, double g,
                                               const TimeDomainSectionOptions& options = {});
+
+/// Steady-state complex source amplitudes σ̂ [m/s per m/s of heave velocity] at one ω (V = n_z e^{iωt}), from
+/// built time-invariant operators; lags <= ops.Steps() − 1.
+Eigen::VectorXcd SteadyHeaveSources(const StripOperators& ops, double omega_rad_s, int lags);
+
+/// Far-field radiated wave amplitudes [m per m/s of heave velocity] towards +y and −y of the steady state
+/// with source amplitudes σ̂ on `panels`: the memory part of the potential behaves like i σ̂ e^{K(z+ζ)}
+/// e^{−iK|y−η|} far away (K = ω²/g), so |A±| = (ω/g) |Σ_j σ̂_j ∫_j e^{Kζ ± iKη} ds|. Energy balance: b33 = ρ
+/// g² (|A+|² + |A−|²)/(2ω).
+std::array<double, 2> FarFieldWaveAmplitudes(const std::vector<Panel>& panels, const Eigen::VectorXcd& sigma,
+                                             double omega_rad_s, double g);
 
 /// Steady-state complex momentum response Î [kg/m] per unit heave velocity at one ω, from built
 /// time-invariant operators (exposed for tests and for callers that reuse the operators). lags <= ops.Steps()

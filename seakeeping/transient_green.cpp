@@ -59,11 +59,15 @@ struct Arg {
   cd a, sqrt_a, x;
 };
 Arg MakeArg(double Yabs, double Z, double t, double g) {
-  Arg r;
-  r.a = cd(-Z, -Yabs);
-  r.sqrt_a = std::sqrt(r.a);
-  r.x = std::sqrt(g) * t / (2.0 * r.sqrt_a);
-  return r;
+  // Hot path: principal sqrt of a = |Z| − i|Y| and x = √g t / (2√a) with real arithmetic only
+  // (√a = (sqrt((r + |Z|)/2), −sqrt((r − |Z|)/2)), r = |a| = |√a|²; 1/√a = conj(√a)/r).
+  Arg out;
+  const double p = -Z, r = std::sqrt(p * p + Yabs * Yabs);
+  out.a = cd(p, -Yabs);
+  out.sqrt_a = cd(std::sqrt(0.5 * (r + p)), -std::sqrt(0.5 * std::fmax(r - p, 0.0)));
+  const double scale = std::sqrt(g) * t / (2.0 * r);
+  out.x = cd(scale * out.sqrt_a.real(), -scale * out.sqrt_a.imag());
+  return out;
 }
 
 cd ConjIf(bool c, cd v) { return c ? std::conj(v) : v; }
@@ -153,9 +157,9 @@ cd DawsonIntegral(cd x) {
   if (x.real() < 0) x = -x;
   const bool conj = x.imag() < 0;
   if (conj) x = std::conj(x);
-  const double r = std::abs(x);
   cd out;
-  if (r < kAsymptoticRadius) {
+  // std::norm, not std::abs: |x|² comparisons avoid a hypot call on this hot path.
+  if (std::norm(x) < kAsymptoticRadius * kAsymptoticRadius) {
     out = DawsonIntegralTable(x);
   } else {
     if (x.imag() > x.real() * (1.0 + 1e-12))
@@ -167,7 +171,7 @@ cd DawsonIntegral(cd x) {
     for (int n = 1; n <= kAsymptoticTerms; ++n, p *= inv2) {
       const cd add = c[n] / (2.0 * n) * p;
       series += add;
-      if (std::abs(add) < 1e-17) break;  // terms fall monotonically until n ~ |x|² >= 36
+      if (std::norm(add) < 1e-34) break;  // |term| < 1e−17; terms fall monotonically until n ~ |x|² >= 36
     }
     // |erfc(x)| <= e^{−Re x²}/(|x|√π): below 1e−18 once Re x² > 40, skip the call.
     double er = 0, ei = 0;
@@ -184,7 +188,7 @@ TransientGreenValues TransientGreen(double Y, double Z, double t, double g) {
   const cd x = s.x;
   const double sg = std::sqrt(g);
   cd F, one_minus_2xF, dz_bracket;  // F, 1 − 2xF, x + (1 − 2x²)F
-  if (std::abs(x) < kAsymptoticRadius) {
+  if (std::norm(x) < kAsymptoticRadius * kAsymptoticRadius) {
     F = Dawson(x);
     one_minus_2xF = 1.0 - 2.0 * x * F;
     dz_bracket = x + (1.0 - 2.0 * x * x) * F;

@@ -60,7 +60,8 @@ TEST_CASE("bad campaigns are refused with clear messages", "[campaign][bad-input
 
   d = Good();
   d.algorithm = "LN_COBYLAA";
-  CHECK_THAT(Error(d), Catch::Contains("'LN_COBYLAA' is not an NLopt algorithm") && Catch::Contains("LN_BOBYQA"));
+  CHECK_THAT(Error(d),
+             Catch::Contains("'LN_COBYLAA' is not an NLopt algorithm") && Catch::Contains("LN_BOBYQA"));
 
   d = Good();
   d.algorithm = "LD_MMA";
@@ -130,8 +131,9 @@ TEST_CASE("the optimize block is read strictly with line numbers", "[campaign][y
   CHECK_THROWS_WITH(read("optimize:\n  variables: { x: [1, 2] }\n"), Catch::Contains("has no base value"));
   CHECK_THROWS_WITH(read("optimize:\n  variables: { x: [1, 2] }\n  start: { x: 1, y: 2 }\n"),
                     Catch::Contains("'optimize.start.y'") && Catch::Contains("not a free variable"));
-  CHECK_THROWS_WITH(read("optimize:\n  variables: { x: [1, 2] }\n  start: { x: 1 }\n  constraints: { L_m: 3 }\n"),
-                    Catch::Contains("_max or <quantity>_min"));
+  CHECK_THROWS_WITH(
+      read("optimize:\n  variables: { x: [1, 2] }\n  start: { x: 1 }\n  constraints: { L_m: 3 }\n"),
+      Catch::Contains("_max or <quantity>_min"));
   CHECK_THROWS_WITH(read("optimize:\n  variables: { x: [1, 2] }\n  start: { x: 1 }\n  max_evals: 3\n"),
                     Catch::Contains("unknown key 'optimize.max_evals'"));
 }

@@ -2,7 +2,6 @@
 // Joe–Kuo sequence and the (0, m, 1)-net property in every dimension; Latin hypercube stratification and
 // seeded reproducibility.
 #include <catch2/catch.hpp>
-
 #include <set>
 
 #include "optimizer/design_sampling.h"
@@ -13,9 +12,14 @@ using hullopt::opt::SobolSequence;
 TEST_CASE("Sobol points 0..7 in dimensions 1-3 equal the published sequence", "[sampling][sobol]") {
   // Joe & Kuo (2008) sequence in Gray-code order, as tabulated e.g. by scipy.stats.qmc.Sobol(scramble=False)
   // and derived by hand from m = (1), (1, 3): dyadic rationals, exact in binary.
-  const double expected[8][3] = {{0, 0, 0},           {0.5, 0.5, 0.5},       {0.75, 0.25, 0.25},
-                                 {0.25, 0.75, 0.75},  {0.375, 0.375, 0.625}, {0.875, 0.875, 0.125},
-                                 {0.625, 0.125, 0.875}, {0.125, 0.625, 0.375}};
+  const double expected[8][3] = {{0, 0, 0},
+                                 {0.5, 0.5, 0.5},
+                                 {0.75, 0.25, 0.25},
+                                 {0.25, 0.75, 0.75},
+                                 {0.375, 0.375, 0.625},
+                                 {0.875, 0.875, 0.125},
+                                 {0.625, 0.125, 0.875},
+                                 {0.125, 0.625, 0.375}};
   SobolSequence s(3);
   for (int i = 0; i < 8; ++i) {
     const auto p = s.Point(i);
@@ -83,5 +87,6 @@ TEST_CASE("samples are scaled to the variable bounds", "[sampling]") {
       CHECK(x[1] < 1);
     }
   }
-  CHECK(hullopt::opt::SampleDesigns(c, "sobol", 1)[0] == std::vector<double>{12, 0});  // Sobol point 1: centre
+  CHECK(hullopt::opt::SampleDesigns(c, "sobol", 1)[0] ==
+        std::vector<double>{12, 0});  // Sobol point 1: centre
 }

@@ -1,7 +1,6 @@
 // history.csv / samples.csv: rows read back bit-identical (%.17g), an incomplete last line from a kill is
 // detected and dropped, a log of another campaign is refused, appending continues after the last good row.
 #include <catch2/catch.hpp>
-
 #include <cmath>
 #include <cstdio>
 #include <fstream>

@@ -2,7 +2,6 @@
 // coefficients are exactly SRC_i = a_i σ_i / σ_y (sample standard deviations) and whose first-order Sobol
 // indices equal SRC_i² for independent inputs.
 #include <catch2/catch.hpp>
-
 #include <cmath>
 
 #include "optimizer/design_sampling.h"
@@ -58,5 +57,6 @@ TEST_CASE("degenerate samples are refused with the variable named", "[sensitivit
   std::vector<std::vector<double>> x = {{1, 0}, {1, 1}, {1, 2}, {1, 3}, {1, 4}};
   std::vector<double> y = {0, 1, 2, 3, 4};
   CHECK_THROWS_WITH(hullopt::opt::ComputeSensitivity(x, y, {"p", "q"}), Catch::Contains("'p' does not vary"));
-  CHECK_THROWS_WITH(hullopt::opt::ComputeSensitivity({{1, 2}}, {1}, {"p", "q"}), Catch::Contains("at least 4"));
+  CHECK_THROWS_WITH(hullopt::opt::ComputeSensitivity({{1, 2}}, {1}, {"p", "q"}),
+                    Catch::Contains("at least 4"));
 }

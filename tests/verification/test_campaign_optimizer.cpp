@@ -1,8 +1,7 @@
 // The NLopt campaign driver on analytic objectives with known optima: local and global algorithms, native
 // constraints and the penalty method, generator refusals, determinism and exact replay (resume).
-#include <catch2/catch.hpp>
-
 #include <atomic>
+#include <catch2/catch.hpp>
 #include <cmath>
 #include <stdexcept>
 
@@ -101,9 +100,9 @@ TEST_CASE("global algorithms find the known optimum", "[nlopt][global]") {
     CHECK(std::fabs(r.best_x[1]) < kGlobalTol);
   }
   {
-    // ISRES (stochastic, native constraints) on the constrained sphere: x = (0.5, 0.5), f = 0.5. The objective
-    // is flat along the boundary (f = 0.5 + 2δ²), so the check is on f: an evolutionary strategy with 20000
-    // evaluations gets within 2e-2 (ISRES stays a little inside the boundary).
+    // ISRES (stochastic, native constraints) on the constrained sphere: x = (0.5, 0.5), f = 0.5. The
+    // objective is flat along the boundary (f = 0.5 + 2δ²), so the check is on f: an evolutionary strategy
+    // with 20000 evaluations gets within 2e-2 (ISRES stays a little inside the boundary).
     constexpr double kIsresTol = 2e-2;
     AnalyticEvaluator ev(Fn("sphere", 2));
     const RunResult r = Optimise(Campaign("GN_ISRES", {{"a", -2, 2, -1}, {"b", -2, 2, -1}},

@@ -30,11 +30,13 @@ std::string Table(const std::string& name, const std::vector<Panel>& panels, dou
   out.precision(6);
   out << name << ": dt = " << c.dt_s << " s, lags = " << c.lags << ", a33(t=0+) = " << c.a33_infinite_kg_per_m
       << " kg/m (" << c.a33_infinite_kg_per_m / (kRho * area) << " rho A)\n";
-  out << "case,w2b_over_g,method,omega_rad_s,a33_kg_per_m,b33_kg_per_m_s,a33_over_rhoA,b33_over_rhoA_omega\n";
+  out << "case,w2b_over_g,method,omega_rad_s,a33_kg_per_m,b33_kg_per_m_s,a33_over_rhoA,b33_over_rhoA_omega,"
+         "b33_energy_over_b33\n";
   for (std::size_t i = 0; i < w.size(); ++i)
     out << name << "," << kNondimensional[i] << ",time_domain," << w[i] << "," << c.a33_kg_per_m[i] << ","
         << c.b33_kg_per_m_s[i] << "," << c.a33_kg_per_m[i] / (kRho * area) << ","
-        << c.b33_kg_per_m_s[i] / (kRho * area * w[i]) << "\n";
+        << c.b33_kg_per_m_s[i] / (kRho * area * w[i]) << ","
+        << c.b33_energy_kg_per_m_s[i] / c.b33_kg_per_m_s[i] << "\n";
   return out.str();
 }
 }  // namespace
