@@ -29,8 +29,8 @@ bool IrregularSeaOptions::IsValid(std::string* error) const {
   return true;
 }
 
-std::vector<WaveComponent> IrregularSeaComponents(const WaveSpectrum& spectrum, double U, double g,
-                                                  const IrregularSeaOptions& o) {
+std::vector<IrregularSeaComponent> IrregularSeaComponents(const WaveSpectrum& spectrum, double U, double g,
+                                                          const IrregularSeaOptions& o) {
   std::string error;
   if (!o.IsValid(&error)) throw std::invalid_argument("irregular sea: " + error);
   const double wp = spectrum.omega_peak();
@@ -39,10 +39,10 @@ std::vector<WaveComponent> IrregularSeaComponents(const WaveSpectrum& spectrum, 
   if (!(w1 > w0)) throw std::invalid_argument("irregular sea: empty frequency band");
   const double dw = (w1 - w0) / o.components;
   std::mt19937_64 gen(o.seed);
-  std::vector<WaveComponent> out;
+  std::vector<IrregularSeaComponent> out;
   out.reserve(o.components);
   for (int i = 0; i < o.components; ++i) {
-    WaveComponent c;
+    IrregularSeaComponent c;
     c.omega_rad_s = w0 + (i + Uniform(gen)) * dw;
     c.omega_e_rad_s = HeadSeaEncounterFrequency(c.omega_rad_s, U, g);
     c.amplitude_m = std::sqrt(2.0 * spectrum.Density(c.omega_rad_s) * dw);
@@ -52,15 +52,15 @@ std::vector<WaveComponent> IrregularSeaComponents(const WaveSpectrum& spectrum, 
   return out;
 }
 
-double WaveElevationAtCg(const std::vector<WaveComponent>& components, double t) {
+double WaveElevationAtCg(const std::vector<IrregularSeaComponent>& components, double t) {
   double z = 0.0;
   for (const auto& c : components) z += c.amplitude_m * std::cos(c.omega_e_rad_s * t + c.phase_rad);
   return z;
 }
 
 std::vector<double> PointAccelerationTimeSeries(const RaoTable& rao,
-                                                const std::vector<WaveComponent>& components, double x,
-                                                double dt, int n) {
+                                                const std::vector<IrregularSeaComponent>& components,
+                                                double x, double dt, int n) {
   std::string error;
   if (!IsValidRaoTable(rao, &error)) throw std::invalid_argument(error);
   // Complex acceleration amplitude of each component: −ω_e² a_i e^{iφ_i} (X3/A − x k X5/(kA)).

@@ -17,7 +17,9 @@
 
 namespace hullopt::sk {
 
-struct WaveComponent {
+/// One random-phase component (named apart from head_sea_wave.h's WaveComponent, which the marcher takes:
+/// the two structs shared a name in one namespace, an ODR clash that kept both headers out of one file).
+struct IrregularSeaComponent {
   double omega_rad_s = 0.0;    ///< [rad/s] wave frequency
   double omega_e_rad_s = 0.0;  ///< [rad/s] encounter frequency in head seas
   double amplitude_m = 0.0;    ///< [m]
@@ -33,17 +35,18 @@ struct IrregularSeaOptions {
 };
 
 /// Components of one realisation at speed U [m/s] (head seas). Throws std::invalid_argument for bad options.
-std::vector<WaveComponent> IrregularSeaComponents(const WaveSpectrum& spectrum, double speed_m_s,
-                                                  double g_m_s2, const IrregularSeaOptions& options = {});
+std::vector<IrregularSeaComponent> IrregularSeaComponents(const WaveSpectrum& spectrum, double speed_m_s,
+                                                          double g_m_s2,
+                                                          const IrregularSeaOptions& options = {});
 
 /// Wave elevation at the CG ζ(t) [m] at time t [s].
-double WaveElevationAtCg(const std::vector<WaveComponent>& components, double t_s);
+double WaveElevationAtCg(const std::vector<IrregularSeaComponent>& components, double t_s);
 
 /// Vertical acceleration [m/s²] at x [m] forward of the CG, sampled at t = i·dt, i = 0..n−1, by linear
 /// superposition of the RAO responses to each component (s = x3 − x·x5, a = −ω_e² s). Components outside the
 /// RAO table's ω_e range are dropped. Throws std::invalid_argument for an invalid table.
 std::vector<double> PointAccelerationTimeSeries(const RaoTable& rao,
-                                                const std::vector<WaveComponent>& components,
+                                                const std::vector<IrregularSeaComponent>& components,
                                                 double x_from_cg_m, double dt_s, int n);
 
 }  // namespace hullopt::sk
