@@ -64,22 +64,8 @@ DesignCase LoadDesignCase(io::YamlMap& root, const std::string& config_file, con
     io::YamlMap s = root.Map("solver");
     d.has_frequencies = s.Has("frequencies");
     if (s.Has("kernel")) s.Choice("kernel", {"transient_green"}, "transient_green");
-    if (d.has_frequencies) {
-      d.solver = io::ParseSolverConfig(s);
-    } else {
-      // ParseSolverConfig requires a frequency list; a design evaluated in seas takes the sea grid instead.
-      io::SolverConfig c;
-      c.method = s.Choice("method", {"time_domain_strip"}, c.method);
-      c.sections = s.Integer("sections", c.sections);
-      if (c.sections < 2) s.Fail("sections", "must be >= 2 (the paper uses 40)");
-      c.panels = s.Integer("panels", c.panels);
-      if (c.panels < 4 || c.panels % 2 != 0) s.Fail("panels", "must be even and >= 4 (the paper uses 14)");
-      c.cs = s.Number("Cs", c.cs);
-      if (c.cs < 0.0) s.Fail("Cs", "must be >= 0 (the paper's values are 0 to 0.15)");
-      c.interaction = s.Boolean("interaction", c.interaction);
-      s.Finish();
-      d.solver = c;
-    }
+    // Evaluations in seas choose their own frequency grid, so solver.frequencies is optional here.
+    d.solver = io::ParseSolverConfig(s, /*frequencies_required=*/false);
   }
   try {
     d.hydrostatics = hull::ComputeHydrostatics(d.hull, d.water.rho_kg_m3);

@@ -45,7 +45,7 @@ sk::FrequencySpec ParseFrequencies(YamlMap& f) {
 
 }  // namespace
 
-SolverConfig ParseSolverConfig(YamlMap& s) {
+SolverConfig ParseSolverConfig(YamlMap& s, bool frequencies_required) {
   SolverConfig c;
   c.method = s.Choice("method", {"time_domain_strip", "strip_theory_stf"}, c.method);
   c.sections = s.Integer("sections", c.sections);
@@ -59,8 +59,10 @@ SolverConfig ParseSolverConfig(YamlMap& s) {
     s.Fail("hydrodynamic_fraction", "must satisfy 0 < fraction <= 1 (the paper uses 0.2 to 0.4)");
   c.path = s.Choice("path", {"periodic", "time_marching"}, c.path);
   c.interaction = s.Boolean("interaction", c.interaction);
-  auto f = s.Map("frequencies");
-  c.frequencies = ParseFrequencies(f);
+  if (frequencies_required || s.Has("frequencies")) {
+    auto f = s.Map("frequencies");
+    c.frequencies = ParseFrequencies(f);
+  }
   s.Finish();
   return c;
 }

@@ -38,8 +38,9 @@ struct SolverConfig {
 };
 
 /// Reads and validates `solver` (consumes its keys; call solver.Finish() afterwards or let this do it).
+/// Without frequencies_required, `frequencies` may be absent (commands that choose their own grid).
 /// Throws InputError "file:line: key 'solver.x' = v: rule".
-SolverConfig ParseSolverConfig(YamlMap& solver);
+SolverConfig ParseSolverConfig(YamlMap& solver, bool frequencies_required = true);
 
 /// Reads `mass` with defaults from the hydrostatics (recorded in the resolved config). Throws InputError for
 /// non-positive mass or radius of gyration, or an LCG outside the hull's length.
