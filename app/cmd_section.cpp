@@ -1,13 +1,146 @@
+// `hullopt section CONFIG --out DIR`: heave added mass and damping per unit length of a 2D section (or of
+// several identical sections side by side in one strip) from the chosen 2D solvers, written to section.csv
+// (ARCHITECTURE §4) and plotted nondimensionally in section.svg.
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <iostream>
+#include <memory>
+#include <sstream>
+#include <stdexcept>
+
 #include "app/commands.h"
+#include "app/output_dir.h"
 #include "io/input_error.h"
+#include "io/section_config.h"
+#include "io/svg_plot.h"
+#include "io/yaml_map.h"
+#include "seakeeping/frequency_domain_section.h"
+#include "seakeeping/section_strip.h"
 
 namespace hullopt::app {
+namespace {
 
-// Placeholder until the section issue lands: registered so --help lists the whole tool.
+using Strip = std::vector<std::vector<sk::Panel>>;
+
+/// Heave coefficients of the whole strip from one method, one value per configured frequency.
+struct MethodCurve {
+  std::string method;
+  std::vector<double> omega, a33, b33;  ///< [rad/s], [kg/m], [kg/(m·s)]
+};
+
+MethodCurve RunFrequencyDomain(const Strip& strip, const io::SectionRunConfig& cfg) {
+  sk::FrequencyDomainOptions opt;
+  opt.rho_kg_m3 = cfg.rho_kg_m3;
+  opt.g_m_s2 = cfg.g_m_s2;
+  MethodCurve c{"frequency_domain", cfg.omegas_rad_s, {}, {}};
+  for (const auto& h : sk::SolveSectionFrequencyDomain(strip, cfg.omegas_rad_s, opt)) {
+    c.a33.push_back(h.a33());
+    c.b33.push_back(h.b33());
+  }
+  return c;
+}
+
+// The time-domain strip solver (forced harmonic heave run to steady state) is wired here when it lands on
+// main: replace the throw by its call, filling c.a33 and c.b33 at cfg.omegas_rad_s.
+MethodCurve RunTimeDomain(const Strip& /*strip*/, const io::SectionRunConfig& /*cfg*/,
+                          const std::string& config_file) {
+  throw io::InputError(
+      config_file +
+      ": key 'section.method' = time_domain: the time-domain strip solver is not yet available in "
+      "this version; use method: [frequency_domain]");
+}
+
+MethodCurve RunMethod(const std::string& method, const Strip& strip, const io::SectionRunConfig& cfg,
+                      const std::string& config_file) {
+  if (method == "frequency_domain") return RunFrequencyDomain(strip, cfg);
+  return RunTimeDomain(strip, cfg, config_file);
+}
+
+void WriteCsv(const std::vector<MethodCurve>& curves, const std::string& path) {
+  std::ofstream os(path);
+  if (!os) throw io::InputError(path + ": cannot write");
+  os << "method,omega_rad_s,a33_kg_per_m,b33_kg_per_m_s\n";
+  char line[256];
+  for (const auto& c : curves) {
+    for (std::size_t i = 0; i < c.omega.size(); ++i) {
+      std::snprintf(line, sizeof line, "%s,%.10g,%.10g,%.10g\n", c.method.c_str(), c.omega[i], c.a33[i],
+                    c.b33[i]);
+      os << line;
+    }
+  }
+  if (!os) throw io::InputError(path + ": write failed");
+}
+
+void WritePlot(const std::vector<MethodCurve>& curves, const io::SectionRunConfig& cfg,
+               const std::string& path) {
+  const double beam = sk::SectionBeam(cfg.strip);
+  const double area = sk::SectionArea(cfg.strip) * cfg.strip.count;  // submerged area of the whole strip
+  const double rho_a = cfg.rho_kg_m3 * area;
+  io::PlotFigure fig;
+  std::ostringstream title;
+  title << "Heave added mass and damping per unit length: " << cfg.shape_name;
+  if (cfg.strip.count > 1) title << " × " << cfg.strip.count << " at " << cfg.strip.spacing_m << " m spacing";
+  fig.title = title.str();
+  std::ostringstream foot;
+  foot.precision(4);
+  foot << "A: submerged area of the strip (" << area << " m²); B: beam of one section (" << beam << " m); "
+       << cfg.strip.panels << " panels per section; ρ " << cfg.rho_kg_m3 << " kg/m³, g " << cfg.g_m_s2
+       << " m/s²";
+  fig.footnote = foot.str();
+  fig.AddPanel("Added mass", "ω²(B/2)/g [-]", "a33 / (ρA) [-]");
+  fig.AddPanel("Damping", "ω²(B/2)/g [-]", "b33 / (ρAω) [-]");
+  for (const auto& c : curves) {
+    std::vector<double> x, ya, yb;
+    for (std::size_t i = 0; i < c.omega.size(); ++i) {
+      x.push_back(c.omega[i] * c.omega[i] * 0.5 * beam / cfg.g_m_s2);
+      ya.push_back(c.a33[i] / rho_a);
+      yb.push_back(c.b33[i] / (rho_a * c.omega[i]));
+    }
+    fig.panels[0].series.push_back(io::PlotSeries::LineMarkers(c.method, x, ya));
+    fig.panels[1].series.push_back(io::PlotSeries::LineMarkers(c.method, x, yb));
+  }
+  fig.panels[0].y_include_zero = true;
+  fig.panels[1].y_include_zero = true;
+  io::WriteSvg(fig, path);
+}
+
+void RunSection(const std::string& config_file, const std::string& out_dir) {
+  io::YamlMap root = io::YamlMap::LoadFile(config_file);
+  const io::SectionRunConfig cfg = io::ReadSectionConfig(root);
+  Strip strip;
+  try {
+    strip = sk::PanelSectionStrip(cfg.strip);
+  } catch (const std::exception& e) {  // ReadSectionConfig checked every field; this is a last guard
+    throw io::InputError(config_file + ": section: " + e.what());
+  }
+  std::vector<MethodCurve> curves;
+  for (const auto& m : cfg.methods) curves.push_back(RunMethod(m, strip, cfg, config_file));
+  for (const auto& c : curves)
+    for (std::size_t i = 0; i < c.omega.size(); ++i)
+      if (!std::isfinite(c.a33[i]) || !std::isfinite(c.b33[i]))
+        throw std::runtime_error("section: " + c.method + " gave a non-finite coefficient at omega = " +
+                                 std::to_string(c.omega[i]) + " rad/s");
+  PrepareOutputDir(out_dir, "section", config_file, root.resolved());
+  WriteCsv(curves, OutPath(out_dir, "section.csv"));
+  WritePlot(curves, cfg, OutPath(out_dir, "section.svg"));
+  std::cout << "hullopt section: " << cfg.omegas_rad_s.size() << " frequencies, " << cfg.methods.size()
+            << " method(s) -> " << OutPath(out_dir, "section.csv") << ", " << OutPath(out_dir, "section.svg")
+            << "\n";
+}
+
+}  // namespace
+
 void AddSectionCommand(CLI::App& app) {
-  auto* cmd = app.add_subcommand("section", "(not yet available in this version)");
-  cmd->allow_extras();
-  cmd->callback([] { throw io::InputError("'hullopt section' is not implemented yet in this version"); });
+  auto* cmd = app.add_subcommand(
+      "section", "Heave added mass and damping per unit length of 2D sections (section.csv, section.svg)");
+  auto config = std::make_shared<std::string>();
+  auto out = std::make_shared<std::string>();
+  cmd->add_option("CONFIG", *config,
+                  "YAML config with a section: block (see examples/section_semicircle.yaml)")
+      ->required();
+  cmd->add_option("--out", *out, "output folder")->required();
+  cmd->callback([config, out] { RunSection(*config, *out); });
 }
 
 }  // namespace hullopt::app
