@@ -79,7 +79,7 @@ double MemoryNormalVelocity(const Panel& p, double y, double z, double ny, doubl
   return MemoryNormalVelocityFromEnds(p, dh(p.y1, p.z1), dh(p.y2, p.z2), ny, nz);
 }
 
-double MemoryPotentialLevel(const Panel& p, double y, double z, double s, double g, double rel_tol) {
+double MemoryPotentialLevelQuadrature(const Panel& p, double y, double z, double s, double g, double rel_tol) {
   if (s == 0.0) return 0.0;
   const Integrand f{p, y, z, s, g};
   // Cheap first try for the (many) smooth cases, e.g. far panels: 3- and 5-point Gauss agreeing to the
@@ -94,6 +94,18 @@ double MemoryPotentialLevel(const Panel& p, double y, double z, double s, double
   const auto [first, error] = Kronrod(f, 0.0, 1.0);
   if (error <= tol) return p.Length() * first;
   return p.Length() * (Adaptive(f, 0.0, 0.5, 0.5 * tol, 1) + Adaptive(f, 0.5, 1.0, 0.5 * tol, 1));
+}
+
+double MemoryPotentialLevelFromEnds(const Panel& p, cd k1, cd k2) {
+  const double L = p.Length();
+  const cd e_minus_ialpha((p.y2 - p.y1) / L, -(p.z2 - p.z1) / L);
+  return (cd(0.0, 1.0) * e_minus_ialpha * (k2 - k1)).real();
+}
+
+double MemoryPotentialLevel(const Panel& p, double y, double z, double s, double g) {
+  if (s == 0.0) return 0.0;
+  return MemoryPotentialLevelFromEnds(p, TransientGreenSpaceTimeIntegral(y - p.y1, z + p.z1, s, g),
+                                      TransientGreenSpaceTimeIntegral(y - p.y2, z + p.z2, s, g));
 }
 
 double MemoryPotential(const Panel& p, double y, double z, double s1, double s2, double g) {

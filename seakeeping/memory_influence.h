@@ -7,8 +7,9 @@
 //   ∫_{τa}^{τb} G~ dτ = Re[H⁽⁻¹⁾(s2) − H⁽⁻¹⁾(s1)].
 // Normal velocity: exact in space as well, from H⁽⁻¹⁾ at the panel's two end points (dζc/ds = −i e^{iα}):
 //   ∫_panel ∫ ∂G~/∂n_p dτ ds = Re[(n_z + i n_y) i e^{−iα} (ΔH⁽⁻¹⁾(q2) − ΔH⁽⁻¹⁾(q1))].
-// Potential: ∫_panel Re H⁽⁻¹⁾ ds has no closed form; adaptive Gauss–Legendre, which refines where the field
-// point's mirror image is close to the panel (both near z = 0) or the kernel oscillates along the panel.
+// Potential: exact in space as well, through K with dK/dζc = H⁽⁻¹⁾ (transient_green.h):
+//   ∫_panel H⁽⁻¹⁾ ds = i e^{−iα} (K(q2) − K(q1)).
+// (Session 1 integrated it by adaptive quadrature; that route is kept as the independent check.)
 #include <complex>
 
 #include "seakeeping/panel.h"
@@ -26,9 +27,16 @@ double MemoryNormalVelocityFromEnds(const Panel& source, std::complex<double> dh
                                     double ny, double nz);
 
 /// ∫_panel Re H⁽⁻¹⁾(p, q, s) ds_q [m] at one lag s >= 0: the potential of the panel's memory, before the
-/// difference over the interval. Adaptive Gauss–Legendre to ~rel_tol of L·max(1, |H⁽⁻¹⁾|).
-double MemoryPotentialLevel(const Panel& source, double y, double z, double s, double g,
-                            double rel_tol = 1e-10);
+/// difference over the interval. Exact: Re[i e^{−iα} (K(q2) − K(q1))] with K = TransientGreenSpaceTimeIntegral.
+double MemoryPotentialLevel(const Panel& source, double y, double z, double s, double g);
+
+/// The same from K already evaluated at the panel's end points (k1 at (y1, z1), k2 at (y2, z2)).
+double MemoryPotentialLevelFromEnds(const Panel& source, std::complex<double> k1, std::complex<double> k2);
+
+/// The same by adaptive Gauss–Kronrod quadrature of Re H⁽⁻¹⁾ along the panel, to ~rel_tol of
+/// L·max(1, |H⁽⁻¹⁾|): the independent second method the closed form is tested against.
+double MemoryPotentialLevelQuadrature(const Panel& source, double y, double z, double s, double g,
+                                      double rel_tol = 1e-10);
 
 /// (1/2π) ∫_{s1}^{s2} ∫_panel G~ ds dτ [m] = (level(s2) − level(s1))/2π.
 double MemoryPotential(const Panel& source, double y, double z, double s1, double s2, double g);

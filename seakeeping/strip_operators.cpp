@@ -46,31 +46,32 @@ struct Level {
   Eigen::RowVectorXd pl;
 };
 
-Level ComputeLevel(const FieldSet& f, const std::vector<Panel>& src, double s, double g, double rho,
-                   double tol) {
+Level ComputeLevel(const FieldSet& f, const std::vector<Panel>& src, double s, double g, double rho) {
   const int nf = static_cast<int>(f.cy.size()), ns = static_cast<int>(src.size());
   Level out{Eigen::MatrixXd::Zero(nf, ns), Eigen::RowVectorXd::Zero(ns)};
   if (s == 0.0 || ns == 0) return out;
+  // Adjacent panels of one contour share an end point: evaluate the kernel there once.
+  std::vector<char> shared(ns, 0);
+  for (int j = 1; j < ns; ++j) shared[j] = src[j - 1].y2 == src[j].y1 && src[j - 1].z2 == src[j].z1;
   std::vector<std::complex<double>> h1(ns), h2(ns);
   for (int i = 0; i < nf; ++i) {
-    auto H = [&](double qy, double qz) {
-      return TransientGreenTimeIntegral(f.cy[i] - qy, f.cz[i] + qz, s, g);
-    };
     for (int j = 0; j < ns; ++j) {
       const Panel& p = src[j];
-      // Adjacent panels of one contour share an end point: evaluate it once.
-      const bool shared = j > 0 && src[j - 1].y2 == p.y1 && src[j - 1].z2 == p.z1;
-      h1[j] = shared ? h2[j - 1] : H(p.y1, p.z1);
-      h2[j] = H(p.y2, p.z2);
+      h1[j] = shared[j] ? h2[j - 1] : TransientGreenTimeIntegral(f.cy[i] - p.y1, f.cz[i] + p.z1, s, g);
+      h2[j] = TransientGreenTimeIntegral(f.cy[i] - p.y2, f.cz[i] + p.z2, s, g);
       out.nv(i, j) = MemoryNormalVelocityFromEnds(p, h1[j], h2[j], f.ny[i], f.nz[i]);
     }
   }
-  for (int j = 0; j < ns; ++j) {
-    double sum = 0;
-    for (std::size_t q = 0; q < f.qy.size(); ++q)
-      sum += f.wnz[q] * MemoryPotentialLevel(src[j], f.qy[q], f.qz[q], s, g, tol);
-    out.pl(j) = -rho * kInv2Pi * sum;
+  // Momentum: Σ_q wnz_q ∫_panel Re H⁽⁻¹⁾ ds, exact along the panel through K (memory_influence.h).
+  for (std::size_t q = 0; q < f.qy.size(); ++q) {
+    for (int j = 0; j < ns; ++j) {
+      const Panel& p = src[j];
+      h1[j] = shared[j] ? h2[j - 1] : TransientGreenSpaceTimeIntegral(f.qy[q] - p.y1, f.qz[q] + p.z1, s, g);
+      h2[j] = TransientGreenSpaceTimeIntegral(f.qy[q] - p.y2, f.qz[q] + p.z2, s, g);
+      out.pl(j) += f.wnz[q] * MemoryPotentialLevelFromEnds(p, h1[j], h2[j]);
+    }
   }
+  out.pl *= -rho * kInv2Pi;
   return out;
 }
 
@@ -127,8 +128,6 @@ bool StripOperatorOptions::IsValid(std::string* error) const {
   };
   if (field_points_per_panel < 1 || field_points_per_panel > 16)
     return fail("field_points_per_panel must be in 1..16, got " + std::to_string(field_points_per_panel));
-  if (!(potential_rel_tol > 0.0 && potential_rel_tol < 1e-3))
-    return fail("potential_rel_tol must be in (0, 1e-3), got " + std::to_string(potential_rel_tol));
   return true;
 }
 
@@ -211,8 +210,8 @@ StripOperators BuildStripOperators(const std::vector<std::vector<Panel>>& panels
         s1 = (n - k - 0.5) * dt;
         s2 = k == 0 ? n * dt : (n - k + 0.5) * dt;
       }
-      const Level a = ComputeLevel(f, panels_per_step[k], s1, g, rho, options.potential_rel_tol);
-      const Level b = ComputeLevel(f, panels_per_step[k], s2, g, rho, options.potential_rel_tol);
+      const Level a = ComputeLevel(f, panels_per_step[k], s1, g, rho);
+      const Level b = ComputeLevel(f, panels_per_step[k], s2, g, rho);
       if (k == n) {
         A -= b.nv - a.nv;
         mom += b.pl - a.pl;
@@ -247,9 +246,9 @@ StripOperators BuildFixedSectionOperators(const std::vector<Panel>& panels, int 
 #pragma omp parallel for schedule(dynamic, 1)
   for (int job = 0; job < jobs; ++job) {
     if (job < N)
-      half[job] = ComputeLevel(f, panels, (job + 0.5) * dt, g, rho, options.potential_rel_tol);
+      half[job] = ComputeLevel(f, panels, (job + 0.5) * dt, g, rho);
     else
-      whole[job - N + 1] = ComputeLevel(f, panels, (job - N + 1) * dt, g, rho, options.potential_rel_tol);
+      whole[job - N + 1] = ComputeLevel(f, panels, (job - N + 1) * dt, g, rho);
   }
   Eigen::MatrixXd A;
   Eigen::RowVectorXd mom;

@@ -26,8 +26,6 @@ namespace hullopt::sk {
 struct StripOperatorOptions {
   /// Gauss points per body panel for the momentum integral ∫φ n_z dl (1 = panel mid-points).
   int field_points_per_panel = 2;
-  /// Relative tolerance of the adaptive panel quadrature of the memory potential.
-  double potential_rel_tol = 1e-8;
   bool IsValid(std::string* error) const;
 };
 

@@ -34,6 +34,12 @@ TransientGreenValues TransientGreen(double Y, double Z, double t, double g);
 /// TransientGreen.
 std::complex<double> TransientGreenTimeIntegral(double Y, double Z, double t, double g);
 
+/// K(ζc, t) with dK/dζc = H⁽⁻¹⁾ [m]: the space integral of the time integral, so that along a straight
+/// source panel with dζc/ds = −i e^{iα}, ∫_panel H⁽⁻¹⁾ ds = i e^{−iα} [K(q2) − K(q1)] exactly. Closed form
+/// (F' = 1 − 2xF): K = −8a(Φ + xF) + 2gt²(ln x − 2Φ + (γ + ln 4)/2), defined up to a function of t only, which
+/// cancels in the panel difference. Same arguments and errors as TransientGreen; K = 0 at t = 0.
+std::complex<double> TransientGreenSpaceTimeIntegral(double Y, double Z, double t, double g);
+
 /// Complex Dawson function F(x) = e^{−x²} ∫_0^x e^{u²} du (libcerf).
 std::complex<double> Dawson(std::complex<double> x);
 
