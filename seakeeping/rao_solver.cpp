@@ -11,7 +11,7 @@ namespace hullopt::sk {
 
 StripKernelBuilder TransientGreenKernelBuilder() {
   return [](StripKernel* k) {
-    StripKernel built = BuildStripKernel(k->panels, k->x_m, k->dt_s, k->rho_kg_m3, k->g_m_s2);
+    StripKernel built = BuildStripKernelMirrorReduced(k->panels, k->x_m, k->dt_s, k->rho_kg_m3, k->g_m_s2);
     k->force = std::move(built.force);
   };
 }

@@ -19,7 +19,7 @@ StripKernel BuildStripKernel(const StripOperators& ops, const std::vector<double
   K.g_m_s2 = ops.G();
   K.x_m = x_m;
   K.panels.resize(N);
-  for (int n = 0; n < N; ++n) K.panels[n] = ops.PanelsAt(n);
+  for (int n = 0; n < N; ++n) K.panels[n] = ops.FullPanelsAt(n);
   K.force.resize(N);
   for (int n = 0; n < N; ++n) K.force[n].resize(n + 1);
   // Column by column (input step m): propagate the source responses forward in n.
@@ -41,7 +41,16 @@ StripKernel BuildStripKernel(const StripOperators& ops, const std::vector<double
       if (Pn > 0) j.noalias() += ops.MomentumCurrent(n) * S[n];
       J[n] = j;
       auto at = [&](int k) { return k >= m ? J[k] : Eigen::RowVectorXd(Eigen::RowVectorXd::Zero(Pm)); };
-      K.force[n][m] = (3.0 * J[n] - 4.0 * at(n - 1) + at(n - 2)) / (2.0 * ops.Dt());
+      const Eigen::RowVectorXd f = (3.0 * J[n] - 4.0 * at(n - 1) + at(n - 2)) / (2.0 * ops.Dt());
+      if (!ops.MirrorReduced()) {
+        K.force[n][m] = f;
+        continue;
+      }
+      // Back to all panels: each panel of a mirror pair takes half the reduced input (its symmetric part).
+      const auto& index = ops.ReducedIndex(m);
+      const auto& share = ops.ReducedShare(m);
+      K.force[n][m].resize(static_cast<Eigen::Index>(index.size()));
+      for (std::size_t p = 0; p < index.size(); ++p) K.force[n][m](p) = share[p] * f(index[p]);
     }
   }
   return K;
@@ -50,6 +59,13 @@ StripKernel BuildStripKernel(const StripOperators& ops, const std::vector<double
 StripKernel BuildStripKernel(const std::vector<std::vector<Panel>>& panels_per_step,
                              const std::vector<double>& x_m, double dt, double rho, double g,
                              const StripOperatorOptions& options) {
+  return BuildStripKernel(BuildStripOperators(panels_per_step, dt, rho, g, options), x_m);
+}
+
+StripKernel BuildStripKernelMirrorReduced(const std::vector<std::vector<Panel>>& panels_per_step,
+                                          const std::vector<double>& x_m, double dt, double rho, double g,
+                                          StripOperatorOptions options) {
+  options.use_mirror_symmetry = true;
   return BuildStripKernel(BuildStripOperators(panels_per_step, dt, rho, g, options), x_m);
 }
 

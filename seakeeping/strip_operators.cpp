@@ -75,24 +75,99 @@ Level ComputeLevel(const FieldSet& f, const std::vector<Panel>& src, double s, d
   return out;
 }
 
-// Rankine system matrix A (with the +1/2 self term) and the Rankine part of the momentum row.
-void Rankine(const FieldSet& f, const std::vector<Panel>& panels, double rho, Eigen::MatrixXd* A,
+// Rankine normal velocities at the collocation points of f from the sources `src` (with the +1/2 self term
+// where a collocation point is a source panel's midpoint) and the Rankine part of the momentum row.
+void Rankine(const FieldSet& f, const std::vector<Panel>& src, double rho, Eigen::MatrixXd* A,
              Eigen::RowVectorXd* mom) {
-  const int n = static_cast<int>(panels.size());
-  A->resize(n, n);
-  mom->setZero(n);
-  for (int j = 0; j < n; ++j) {
-    for (int i = 0; i < n; ++i) {
-      const auto r = RankinePanelInfluence(panels[j], f.cy[i], f.cz[i]);
-      const auto m = ImagePanelInfluence(panels[j], f.cy[i], f.cz[i]);
+  const int nf = static_cast<int>(f.cy.size()), ns = static_cast<int>(src.size());
+  A->resize(nf, ns);
+  mom->setZero(ns);
+  for (int j = 0; j < ns; ++j) {
+    for (int i = 0; i < nf; ++i) {
+      const auto r = RankinePanelInfluence(src[j], f.cy[i], f.cz[i]);
+      const auto m = ImagePanelInfluence(src[j], f.cy[i], f.cz[i]);
       (*A)(i, j) = f.ny[i] * (r.vy - m.vy) + f.nz[i] * (r.vz - m.vz);
     }
     double sum = 0;
     for (std::size_t q = 0; q < f.qy.size(); ++q)
-      sum += f.wnz[q] * (RankinePanelInfluence(panels[j], f.qy[q], f.qz[q]).phi -
-                         ImagePanelInfluence(panels[j], f.qy[q], f.qz[q]).phi);
+      sum += f.wnz[q] * (RankinePanelInfluence(src[j], f.qy[q], f.qz[q]).phi -
+                         ImagePanelInfluence(src[j], f.qy[q], f.qz[q]).phi);
     (*mom)(j) = rho * sum;
   }
+}
+
+// Mirror symmetry of one step's panels about y = yc: the reduced (half) panels and, per reduced panel, its
+// own full index and its partner's (the same index for a panel on the symmetry line).
+struct MirrorMap {
+  std::vector<int> half, partner;
+  std::vector<int> reduced_of;  // per full panel
+  std::vector<double> share;    // per full panel
+};
+
+bool FindMirrorMap(const std::vector<Panel>& P, double yc, double tol, MirrorMap* out) {
+  const int n = static_cast<int>(P.size());
+  std::vector<int> mirror(n, -1);
+  for (int j = 0; j < n; ++j) {
+    // The mirror image of a panel runs the other way, so that its normal is mirrored too.
+    for (int k = 0; k < n && mirror[j] < 0; ++k)
+      if (std::fabs(P[k].y1 - (2 * yc - P[j].y2)) <= tol && std::fabs(P[k].z1 - P[j].z2) <= tol &&
+          std::fabs(P[k].y2 - (2 * yc - P[j].y1)) <= tol && std::fabs(P[k].z2 - P[j].z1) <= tol)
+        mirror[j] = k;
+    if (mirror[j] < 0) return false;
+  }
+  MirrorMap m;
+  m.reduced_of.assign(n, -1);
+  m.share.assign(n, 1.0);
+  for (int j = 0; j < n; ++j) {
+    const double d = P[j].MidY() - yc;
+    if (mirror[j] == j || d > tol) {
+      m.reduced_of[j] = static_cast<int>(m.half.size());
+      m.half.push_back(j);
+      m.partner.push_back(mirror[j]);
+    }
+  }
+  for (int j = 0; j < n; ++j) {
+    if (m.reduced_of[j] < 0) m.reduced_of[j] = m.reduced_of[mirror[j]];
+    if (m.reduced_of[j] < 0) return false;  // a pair straddling the line off its own mirror: not symmetric
+    if (mirror[j] != j) m.share[j] = 0.5;
+  }
+  *out = std::move(m);
+  return true;
+}
+
+// One symmetry line y_c for all steps (the memory couples the steps, so they must share it).
+bool FindMirrorMaps(const std::vector<std::vector<Panel>>& steps, std::vector<MirrorMap>* maps) {
+  double scale = 0.0, ysum = 0.0;
+  int count = 0;
+  for (const auto& P : steps)
+    for (const Panel& p : P) {
+      scale = std::fmax(scale, std::fmax(std::fmax(std::fabs(p.y1), std::fabs(p.y2)),
+                                         std::fmax(std::fabs(p.z1), std::fabs(p.z2))));
+      ysum += p.y1 + p.y2;
+      count += 2;
+    }
+  if (count == 0) return false;
+  const double yc = ysum / count, tol = 1e-9 * scale;
+  maps->assign(steps.size(), MirrorMap{});
+  for (std::size_t n = 0; n < steps.size(); ++n)
+    if (!FindMirrorMap(steps[n], yc, tol, &(*maps)[n])) return false;
+  return true;
+}
+
+// Columns of the full sources combined into the symmetric (σ_j = σ_j′) reduced sources.
+Eigen::MatrixXd ReduceColumns(const Eigen::MatrixXd& full, const MirrorMap& m) {
+  Eigen::MatrixXd out(full.rows(), static_cast<Eigen::Index>(m.half.size()));
+  for (std::size_t r = 0; r < m.half.size(); ++r) {
+    out.col(r) = full.col(m.half[r]);
+    if (m.partner[r] != m.half[r]) out.col(r) += full.col(m.partner[r]);
+  }
+  return out;
+}
+Eigen::RowVectorXd ReduceColumns(const Eigen::RowVectorXd& full, const MirrorMap& m) {
+  Eigen::RowVectorXd out(static_cast<Eigen::Index>(m.half.size()));
+  for (std::size_t r = 0; r < m.half.size(); ++r)
+    out(r) = full(m.half[r]) + (m.partner[r] != m.half[r] ? full(m.partner[r]) : 0.0);
+  return out;
 }
 
 void CheckPanels(const std::vector<Panel>& panels, int step) {
@@ -183,7 +258,26 @@ StripOperators BuildStripOperators(const std::vector<std::vector<Panel>>& panels
   for (int n = 0; n < N; ++n) CheckPanels(panels_per_step[n], n);
   StripOperators ops;
   ops.steps_ = N, ops.dt_ = dt, ops.rho_ = rho, ops.g_ = g, ops.invariant_ = false;
-  ops.panels_ = panels_per_step;
+  std::vector<MirrorMap> maps;
+  ops.reduced_ = options.use_mirror_symmetry && FindMirrorMaps(panels_per_step, &maps);
+  ops.reduced_index_.resize(N);
+  ops.reduced_share_.resize(N);
+  if (ops.reduced_) {
+    ops.full_panels_ = panels_per_step;
+    ops.panels_.resize(N);
+    for (int n = 0; n < N; ++n) {
+      for (int j : maps[n].half) ops.panels_[n].push_back(panels_per_step[n][j]);
+      ops.reduced_index_[n] = maps[n].reduced_of;
+      ops.reduced_share_[n] = maps[n].share;
+    }
+  } else {
+    ops.panels_ = panels_per_step;
+    for (int n = 0; n < N; ++n) {
+      const int P = static_cast<int>(panels_per_step[n].size());
+      for (int j = 0; j < P; ++j) ops.reduced_index_[n].push_back(j);
+      ops.reduced_share_[n].assign(P, 1.0);
+    }
+  }
   ops.system_.resize(N);
   ops.lu_.resize(N);
   ops.momentum_current_.resize(N);
@@ -193,11 +287,22 @@ StripOperators BuildStripOperators(const std::vector<std::vector<Panel>>& panels
   // count.
 #pragma omp parallel for schedule(dynamic, 1)
   for (int n = N - 1; n >= 0; --n) {  // largest work first
-    const auto& P = panels_per_step[n];
-    const FieldSet f = MakeFieldSet(P, options.field_points_per_panel);
+    FieldSet f = MakeFieldSet(ops.panels_[n], options.field_points_per_panel);
+    if (ops.reduced_) {
+      // The momentum integrand is symmetric: the points of a mirror pair's half count twice.
+      const int pp = options.field_points_per_panel;
+      for (std::size_t r = 0; r < maps[n].half.size(); ++r)
+        if (maps[n].partner[r] != maps[n].half[r])
+          for (int q = 0; q < pp; ++q) f.wnz[r * pp + q] *= 2.0;
+    }
+    auto reduce = [&](Level&& l, int k) {
+      if (ops.reduced_) l.nv = ReduceColumns(l.nv, maps[k]), l.pl = ReduceColumns(l.pl, maps[k]);
+      return std::move(l);
+    };
     Eigen::MatrixXd A;
     Eigen::RowVectorXd mom;
-    Rankine(f, P, rho, &A, &mom);
+    Rankine(f, panels_per_step[n], rho, &A, &mom);
+    if (ops.reduced_) A = ReduceColumns(A, maps[n]), mom = ReduceColumns(mom, maps[n]);
     ops.memory_[n].resize(n);
     ops.momentum_memory_[n].resize(n);
     for (int k = 0; k <= n; ++k) {
@@ -210,8 +315,8 @@ StripOperators BuildStripOperators(const std::vector<std::vector<Panel>>& panels
         s1 = (n - k - 0.5) * dt;
         s2 = k == 0 ? n * dt : (n - k + 0.5) * dt;
       }
-      const Level a = ComputeLevel(f, panels_per_step[k], s1, g, rho);
-      const Level b = ComputeLevel(f, panels_per_step[k], s2, g, rho);
+      const Level a = reduce(ComputeLevel(f, panels_per_step[k], s1, g, rho), k);
+      const Level b = reduce(ComputeLevel(f, panels_per_step[k], s2, g, rho), k);
       if (k == n) {
         A -= b.nv - a.nv;
         mom += b.pl - a.pl;
@@ -239,6 +344,9 @@ StripOperators BuildFixedSectionOperators(const std::vector<Panel>& panels, int 
   ops.steps_ = N, ops.dt_ = dt, ops.rho_ = rho, ops.g_ = g, ops.invariant_ = true;
   ops.has_start_ = !steady_state_only;
   ops.panels_ = {panels};
+  ops.reduced_index_.assign(1, {});
+  for (std::size_t j = 0; j < panels.size(); ++j) ops.reduced_index_[0].push_back(static_cast<int>(j));
+  ops.reduced_share_.assign(1, std::vector<double>(panels.size(), 1.0));
   const FieldSet f = MakeFieldSet(panels, options.field_points_per_panel);
   // Levels: half[m] at (m + ½)dt, m = 0..N−1; whole[n] at n·dt, n = 1..N−1.
   std::vector<Level> half(N), whole(N);

@@ -26,6 +26,13 @@ namespace hullopt::sk {
 struct StripOperatorOptions {
   /// Gauss points per body panel for the momentum integral ∫φ n_z dl (1 = panel mid-points).
   int field_points_per_panel = 2;
+  /// When every step's panels are mirror-symmetric about one vertical line y = y_c (monohull, catamaran,
+  /// SWATH and trimaran sections; one demihull alone), solve only the symmetric part of the problem on the
+  /// panels with y > y_c (sources σ_j = σ_j′ of mirror pairs): half the kernel evaluations and 1/8 of the
+  /// reduction work. Exact for the vertical force, which the antisymmetric part of any input does not produce.
+  /// Then PanelsAt(n) is the half set; FullPanelsAt/ReducedIndex/ReducedShare map inputs on all panels to it.
+  /// Off by default: the marching path feeds normal velocities for all panels.
+  bool use_mirror_symmetry = false;
   bool IsValid(std::string* error) const;
 };
 
@@ -39,6 +46,16 @@ class StripOperators {
   bool TimeInvariant() const { return invariant_; }
   const std::vector<Panel>& PanelsAt(int n) const { return panels_[invariant_ ? 0 : n]; }
   int PanelCount(int n) const { return static_cast<int>(PanelsAt(n).size()); }
+  /// True when built on the mirror-symmetric half (StripOperatorOptions::use_mirror_symmetry).
+  bool MirrorReduced() const { return reduced_; }
+  /// All panels of step n as given (== PanelsAt(n) unless MirrorReduced()).
+  const std::vector<Panel>& FullPanelsAt(int n) const { return reduced_ ? full_panels_[n] : PanelsAt(n); }
+  /// Per panel of FullPanelsAt(n): the index of its panel in PanelsAt(n), and the share of that reduced
+  /// panel's input it carries (½ for each panel of a mirror pair, 1 for a panel on the symmetry line), so that
+  /// V_reduced(r) = Σ_j share_j V_j over the panels j with index r (the symmetric part of V). Identity and 1
+  /// when not reduced.
+  const std::vector<int>& ReducedIndex(int n) const { return reduced_index_[invariant_ ? 0 : n]; }
+  const std::vector<double>& ReducedShare(int n) const { return reduced_share_[invariant_ ? 0 : n]; }
 
   /// A_n − M_{n,n} [-] (P_n × P_n).
   const Eigen::MatrixXd& System(int n) const;
@@ -64,7 +81,10 @@ class StripOperators {
   double dt_ = 0, rho_ = 0, g_ = 0;
   bool invariant_ = false;
   bool has_start_ = true;  // time-invariant: memory of the first half interval available
-  std::vector<std::vector<Panel>> panels_;
+  bool reduced_ = false;    // mirror-symmetric half (general operators only)
+  std::vector<std::vector<Panel>> panels_, full_panels_;
+  std::vector<std::vector<int>> reduced_index_;
+  std::vector<std::vector<double>> reduced_share_;
   // General: index n (system, lu, momentum_current), [n][k] (memory, momentum_memory).
   // Time-invariant: system/lu/momentum_current [0] for n = 0 (no self memory) and [1] for n >= 1;
   // memory/momentum_memory [0][l] full interval at lag l, [1][n] the first half interval [0, dt/2] seen at

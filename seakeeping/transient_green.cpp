@@ -110,18 +110,31 @@ cd DawsonIntegralQuadrature(cd x) {
 
 // Table of Φ and F on the grid x = (i + i·j)·h, 0 <= i, j <= kGridN, covering the first quadrant of |x| < 6.
 // Between nodes Φ(x0 + δ) = Φ(x0) + Σ_k F⁽ᵏ⁾(x0) δ^{k+1}/(k+1)!, with F' = 1 − 2xF and
-// F⁽ᵏ⁺¹⁾ = −2x F⁽ᵏ⁾ − 2k F⁽ᵏ⁻¹⁾; |δ| <= 0.071 and 2|x||δ| <= 0.87, so 18 terms reach ~1e−16.
+// F⁽ᵏ⁺¹⁾ = −2x F⁽ᵏ⁾ − 2k F⁽ᵏ⁻¹⁾; |δ| <= 0.071 and 2|x||δ| <= 0.87, so 18 terms reach ~1e−16. The Taylor
+// coefficients c_0 = Φ(x0), c_{k+1} = F⁽ᵏ⁾(x0)/(k+1)! are stored per node, so that evaluation is Horner's rule
+// (Φ = Σ c_k δ^k, F = Φ' = Σ k c_k δ^{k−1}): this lookup is the hot spot of the strip-kernel build.
 constexpr double kGridStep = 0.1;
 constexpr int kGridN = 61;
 constexpr int kTaylorTerms = 18;
+constexpr int kCoefficients = kTaylorTerms + 2;  // c_0 .. c_{T+1}
 struct PhiTable {
-  std::vector<cd> phi, f;
-  PhiTable() : phi((kGridN + 1) * (kGridN + 1)), f(phi.size()) {
+  std::vector<cd> coef;  // node-major, kCoefficients per node
+  PhiTable() : coef(static_cast<std::size_t>((kGridN + 1) * (kGridN + 1) * kCoefficients)) {
     for (int i = 0; i <= kGridN; ++i)
       for (int j = 0; j <= kGridN; ++j) {
         const cd x(i * kGridStep, j * kGridStep);
-        phi[i * (kGridN + 1) + j] = DawsonIntegralQuadrature(x);
-        f[i * (kGridN + 1) + j] = Dawson(x);
+        cd* c = &coef[static_cast<std::size_t>((i * (kGridN + 1) + j) * kCoefficients)];
+        c[0] = DawsonIntegralQuadrature(x);
+        cd fk_prev = Dawson(x), fk = 1.0 - 2.0 * x * fk_prev;  // F⁽⁰⁾, F⁽¹⁾
+        double factorial = 1.0;                                // (k+1)!
+        c[1] = fk_prev;
+        for (int k = 1; k <= kTaylorTerms; ++k) {
+          factorial *= (k + 1);
+          c[k + 1] = fk / factorial;
+          const cd next = -2.0 * x * fk - 2.0 * k * fk_prev;
+          fk_prev = fk;
+          fk = next;
+        }
       }
   }
 };
@@ -130,29 +143,37 @@ const PhiTable& Table() {
   return table;
 }
 
-// Φ and F together from the table (the F series reuses the powers of δ: F(x0 + δ) = Σ_k F⁽ᵏ⁾(x0) δ^k/k!).
+const cd* NodeCoefficients(cd x, cd* delta) {
+  // x is in the first quadrant: rounding by +0.5 truncation (cheaper than lround on this hot path).
+  const int i = static_cast<int>(x.real() / kGridStep + 0.5);
+  const int j = static_cast<int>(x.imag() / kGridStep + 0.5);
+  *delta = x - cd(i * kGridStep, j * kGridStep);
+  return &Table().coef[static_cast<std::size_t>((i * (kGridN + 1) + j) * kCoefficients)];
+}
+
+cd DawsonIntegralTableOnly(cd x) {
+  cd d;
+  const cd* c = NodeCoefficients(x, &d);
+  cd phi = c[kCoefficients - 1];
+  for (int k = kCoefficients - 2; k >= 0; --k) phi = phi * d + c[k];
+  return phi;
+}
+
+// Φ and F together from the table.
 struct PhiAndF {
   cd phi, f;
 };
 PhiAndF DawsonIntegralTable(cd x) {
-  const PhiTable& t = Table();
-  const int i = static_cast<int>(std::lround(x.real() / kGridStep));
-  const int j = static_cast<int>(std::lround(x.imag() / kGridStep));
-  const cd x0(i * kGridStep, j * kGridStep);
-  const cd d = x - x0;
-  const int idx = i * (kGridN + 1) + j;
-  cd fk_prev = t.f[idx];             // F⁽⁰⁾
-  cd fk = 1.0 - 2.0 * x0 * fk_prev;  // F⁽¹⁾
-  cd power = d, sum = t.phi[idx] + fk_prev * d, f = fk_prev + fk * d;
-  for (int k = 1; k <= kTaylorTerms; ++k) {
-    power *= d / static_cast<double>(k + 1);  // δ^{k+1}/(k+1)!
-    sum += fk * power;
-    const cd next = -2.0 * x0 * fk - 2.0 * k * fk_prev;
-    f += next * power;
-    fk_prev = fk;
-    fk = next;
+  cd d;
+  const cd* c = NodeCoefficients(x, &d);
+  constexpr int M = kCoefficients - 1;
+  cd phi = c[M], f = static_cast<double>(M) * c[M];
+  for (int k = M - 1; k >= 1; --k) {
+    phi = phi * d + c[k];
+    f = f * d + static_cast<double>(k) * c[k];
   }
-  return {sum, f};
+  phi = phi * d + c[0];
+  return {phi, f};
 }
 
 // Σ_{n>=1} c_n/(2n) x^{−2n}: the algebraic part of Φ − ½ ln x − (γ + ln 4)/4 (with a minus sign).
@@ -175,6 +196,9 @@ cd ErfcFirstQuadrant(cd x) {
   return {er, ei};
 }
 
+// ln x without the hypot of std::log (x != 0).
+cd LogFirstQuadrant(cd x) { return {0.5 * std::log(std::norm(x)), std::atan2(x.imag(), x.real())}; }
+
 void CheckAsymptoticSector(cd x) {
   if (x.imag() > x.real() * (1.0 + 1e-12))
     throw std::domain_error("Dawson integral: asymptotic form needs |arg x| <= pi/4, got arg " +
@@ -191,10 +215,10 @@ cd DawsonIntegral(cd x) {
   cd out;
   // std::norm, not std::abs: |x|² comparisons avoid a hypot call on this hot path.
   if (std::norm(x) < kAsymptoticRadius * kAsymptoticRadius) {
-    out = DawsonIntegralTable(x).phi;
+    out = DawsonIntegralTableOnly(x);
   } else {
     CheckAsymptoticSector(x);
-    out = kPhiConstant + 0.5 * std::log(x) - PhiAlgebraicSeries(x) - kI * (M_PI / 4.0) * ErfcFirstQuadrant(x);
+    out = kPhiConstant + 0.5 * LogFirstQuadrant(x) - PhiAlgebraicSeries(x) - kI * (M_PI / 4.0) * ErfcFirstQuadrant(x);
   }
   return ConjIf(conj, out);
 }
@@ -254,13 +278,13 @@ cd TransientGreenSpaceTimeIntegral(double Y, double Z, double t, double g) {
     // The constant 4C·gt² makes it the same function as the asymptotic form below; here gt² = 4a x² <= 144|a|,
     // so the cancellation inside the bracket costs at most ~2 digits.
     const PhiAndF pf = DawsonIntegralTable(x);
-    K = -8.0 * a * (pf.phi + x * pf.f) + 2.0 * g * t * t * (std::log(x) - 2.0 * pf.phi + 2.0 * kPhiConstant);
+    K = -8.0 * a * (pf.phi + x * pf.f) + 2.0 * g * t * t * (LogFirstQuadrant(x) - 2.0 * pf.phi + 2.0 * kPhiConstant);
   } else {
     // ln x − 2Φ + 2C = 2Σ c_n/(2n) x^{−2n} + i(π/2) erfc(x) with gt² = 4a x²: no gt²-sized cancellation left.
     CheckAsymptoticSector(x);
     const cd erfc = ErfcFirstQuadrant(x);
     const cd series = PhiAlgebraicSeries(x);
-    const cd phi = kPhiConstant + 0.5 * std::log(x) - series - kI * (M_PI / 4.0) * erfc;
+    const cd phi = kPhiConstant + 0.5 * LogFirstQuadrant(x) - series - kI * (M_PI / 4.0) * erfc;
     // F ~ Σ c_n x^{−(2n+1)} + i(√π/2) e^{−x²}; xF is needed.
     const auto& c = AsymptoticCoefficients();
     const cd inv2 = 1.0 / (x * x);
