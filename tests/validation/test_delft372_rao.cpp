@@ -1,14 +1,16 @@
 // Delft 372 catamaran at Fn 0.75 (issue 4, item 4): computed heave and pitch RAOs (both demihulls in the
 // strips, transient Green-function kernel, Cs = 0.024 as in the paper) against the tank data of van 't Veer
 // (1998). Acceptance: the peak heave RAO within 15% of the measured peak, at a λ/L within 10% of the measured
-// one. 40 sections as the paper, 8 panels per demihull instead of 14 to keep the kernel to seconds (14 panels
-// raise the peak by 0.8%). Writes the comparison plot to the build folder (docs/delft372_rao_fn075.svg is a
-// copy).
+// one. Checked at 80 sections × 28 panels, where the peak has converged in sections (120 × 28 and 160 × 14
+// change it by < 0.5%; docs/ship-motions.md, "Convergence"); the paper's 40 × 14 is computed and reported
+// beside it, not checked: it is 4–5% lower because of the shallow aft sections of this hull (draught 0.013 m
+// at the transom), which need Δx ≲ 0.04 m. Writes the comparison plot to the build folder
+// (docs/delft372_rao_fn075.svg is a copy).
 //
-// KNOWN MISS (tagged [!mayfail]: reported, not hidden): the computed peak is about 19% below the measured one
-// (2.04 vs 2.53) at the right λ/L. Findings (docs/ship-motions.md, "Delft 372 validation"): the peak still
-// rises with the number of sections (+7% from 20 to 40, +4% from 40 to 80 for one demihull), and the demihull
-// interaction in the strips lowers it by 14% (one demihull alone: 2.38, −6%).
+// The margin is small: converged peak 2.16 (80 × 28) to 2.17 (80 × 56) against the measured 2.53, i.e.
+// −14.6% to −14.2% against the 15% limit. Findings (docs/ship-motions.md): the 2D demihull interaction in the
+// strips lowers the peak by 14% (one demihull alone: 2.48 converged), and Cs is not the cause (Cs = 0 raises it
+// by about 0.2).
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <iostream>
@@ -22,7 +24,7 @@
 
 namespace sk = hullopt::sk;
 
-TEST_CASE("Delft 372 Fn 0.75: peak heave against the tank", "[validation][delft372][!mayfail]") {
+TEST_CASE("Delft 372 Fn 0.75: peak heave against the tank", "[validation][delft372]") {
   constexpr double kG = 9.81, kRho = 1000.0, kL = 3.0;
   const double U = 0.75 * std::sqrt(kG * kL);
   const auto tank = hullopt::io::ReadTankRaoCsv(std::string(HULLOPT_SOURCE_DIR) +
@@ -36,32 +38,39 @@ TEST_CASE("Delft 372 Fn 0.75: peak heave against the tank", "[validation][delft3
     m.pitch_amp.push_back(p.pitch_amp);
     m.pitch_phase_deg.push_back(p.pitch_phase_deg);
   }
-  sk::RaoSolverOptions o;
-  o.sections = 40;
-  o.panels = 8;
-  o.motion.damping_cs = 0.024;
-  o.motion.hull_name = "delft372";
   const auto w = sk::WaveFrequencies(
       sk::FrequencySpec::Range(sk::FrequencySpec::Quantity::kLambdaOverL, 0.8, 3.0, 89), U, kG, kL);
-  const auto rao =
-      sk::ComputeRaos(hullopt::testing::Delft372Hull(HULLOPT_SOURCE_DIR), hullopt::testing::Delft372Mass(), U,
-                      kRho, kG, w, o, sk::TransientGreenKernelBuilder());
-  std::vector<double> lam, h;
+  auto compute = [&](int sections, int panels) {
+    sk::RaoSolverOptions o;
+    o.sections = sections;
+    o.panels = panels;
+    o.motion.damping_cs = 0.024;
+    o.motion.hull_name = "delft372";
+    return sk::ComputeRaos(hullopt::testing::Delft372Hull(HULLOPT_SOURCE_DIR), hullopt::testing::Delft372Mass(),
+                           U, kRho, kG, w, o, sk::TransientGreenKernelBuilder());
+  };
+  const auto rao = compute(80, 28);
+  const auto rao_paper = compute(40, 14);
+  std::vector<double> lam, h, h_paper;
   for (std::size_t i = 0; i < w.size(); ++i) {
     lam.push_back(2 * M_PI * kG / (w[i] * w[i]) / kL);
     h.push_back(std::abs(rao.heave[i]));
+    h_paper.push_back(std::abs(rao_paper.heave[i]));
   }
+  const auto computed_paper = hullopt::opt::InterpolatedPeak(lam, h_paper);
   const auto computed = hullopt::opt::InterpolatedPeak(lam, h);
   const auto measured = hullopt::opt::InterpolatedPeak(m.lambda_over_L, m.heave_amp);
   hullopt::io::WriteSvg(
-      hullopt::io::RaoFigure({rao}, {"time-domain strip, Cs 0.024"}, kL,
-                             "Delft 372, Fn 0.75, both demihulls, 40 sections × 8 panels, Cs 0.024", &m),
+      hullopt::io::RaoFigure({rao, rao_paper}, {"time-domain strip, 80 × 28", "time-domain strip, 40 × 14"}, kL,
+                             "Delft 372, Fn 0.75, both demihulls, Cs 0.024", &m),
       std::string(HULLOPT_BINARY_DIR) + "/delft372_rao_fn075.svg");
   std::cout << "Delft 372 Fn 0.75: computed peak heave " << computed.value << " at lambda/L " << computed.x
-            << "; measured " << measured.value << " at " << measured.x << "\n";
+            << " (80 x 28; 40 x 14: " << computed_paper.value << " at " << computed_paper.x << "); measured "
+            << measured.value << " at " << measured.x << " -> " << 100 * (computed.value / measured.value - 1)
+            << "% (40 x 14: " << 100 * (computed_paper.value / measured.value - 1) << "%)\n";
   constexpr double kPeakTol = 0.15, kLambdaTol = 0.10;  // issue 4, item 4
   CHECK(std::fabs(computed.x - measured.x) < kLambdaTol * measured.x);
-  CHECK(std::fabs(computed.value - measured.value) < kPeakTol * measured.value);  // the known miss
+  CHECK(std::fabs(computed.value - measured.value) < kPeakTol * measured.value);
   // Away from the peak the curve must follow the data: at λ/L = 1.0 (short waves) the computed heave is
   // within 0.15 (absolute, 6% of the measured peak) of the measured one. Whole-curve sanity, not the
   // acceptance.
