@@ -3,9 +3,10 @@
 # identical (all columns but wall_time_s) with 1 and 2 OpenMP threads and, when the binary is built with MPI
 # (HULLOPT_MPI=ON) and mpirun works here, under `mpirun -n 2`. The linear test objective's sensitivities
 # equal the closed form SRC_i = a_i σ_i / σ_y.
-# Usage: bash tests/cli/campaign_parallel.sh /path/to/hullopt
+# Usage: bash tests/cli/campaign_parallel.sh /path/to/hullopt [/path/to/hullopt-built-with-MPI]
 set -u
-HULLOPT=${1:?usage: $0 /path/to/hullopt}
+HULLOPT=${1:?usage: $0 /path/to/hullopt [mpi-binary]}
+HULLOPT_MPI=${2:-$HULLOPT}
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 fail() { echo "FAIL: $*" >&2; exit 1; }
@@ -54,13 +55,13 @@ for name, a in (("x1", 1), ("x2", 2), ("x3", 3)):
 PY
 echo "ok: SRCs equal a_i sigma_i / sigma_y"
 
-if command -v mpirun > /dev/null && "$HULLOPT" --version | grep -q mpi; then
-  if mpirun --allow-run-as-root --oversubscribe -n 2 "$HULLOPT" explore "$work/explore.yaml" --out "$work/m2" \
+if command -v mpirun > /dev/null && "$HULLOPT_MPI" --version | grep -q mpi; then
+  if mpirun --allow-run-as-root --oversubscribe -n 2 "$HULLOPT_MPI" explore "$work/explore.yaml" --out "$work/m2" \
        --threads 1 --quiet > "$work/mpi.log" 2>&1; then
     diff <(strip "$work/t1/samples.csv") <(strip "$work/m2/samples.csv") > /dev/null || fail "mpirun -n 2 differs"
     grep -q '"mpi_ranks": 2' "$work/m2/summary.json" || fail "summary does not show 2 ranks"
     echo "ok: samples.csv identical under mpirun -n 2"
-    mpirun --allow-run-as-root --oversubscribe -n 2 "$HULLOPT" optimize "$work/optimize.yaml" --out "$work/om2" \
+    mpirun --allow-run-as-root --oversubscribe -n 2 "$HULLOPT_MPI" optimize "$work/optimize.yaml" --out "$work/om2" \
       --threads 1 --quiet > "$work/mpi_opt.log" 2>&1 || { cat "$work/mpi_opt.log" >&2; fail "mpirun optimize"; }
     diff <(strip "$work/o1/history.csv") <(strip "$work/om2/history.csv") > /dev/null || fail "optimize: mpirun -n 2 differs"
     grep -q '"mpi_ranks": 2' "$work/om2/summary.json" || fail "optimize summary does not show 2 ranks"
