@@ -3,8 +3,9 @@
 // (1998). Acceptance: the peak heave RAO within 15% of the measured peak, at a λ/L within 10% of the measured
 // one. Checked at 80 sections × 28 panels, where the peak has converged in sections (120 × 28 and 160 × 14
 // change it by < 0.5%; docs/ship-motions.md, "Convergence"); the paper's 40 × 14 is computed and reported
-// beside it, not checked: it is 4–5% lower because of the shallow aft sections of this hull (draught 0.013 m
-// at the transom), which need Δx ≲ 0.04 m. Writes the comparison plot to the build folder
+// beside it, not checked: it is 4–5% lower because the wetted section narrows sharply in the last 75 mm to the
+// nearly dry transom (3 mm deep at x = 0), so the transom momentum term, taken by linear extrapolation from
+// the last two stations, needs Δx ≲ 0.04 m. Writes the comparison plot to the build folder
 // (docs/delft372_rao_fn075.svg is a copy).
 //
 // The margin is small: converged peak 2.16 (80 × 28) to 2.17 (80 × 56) against the measured 2.53, i.e.
