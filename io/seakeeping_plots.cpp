@@ -1,6 +1,7 @@
 #include "io/seakeeping_plots.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 
@@ -19,7 +20,12 @@ std::string SeaLabel(const sk::SeaEvaluation& s) {
   return "Hs " + Fmt(s.sea.Hs_m) + " m, Tz " + Fmt(s.Tz_s, "%.3g") + " s";
 }
 
-std::string Numbered(size_t i, const EvaluatedDesign& d) { return std::to_string(i + 1) + " " + d.name; }
+// Legend label: the design's name, numbered by its place in the list unless the name carries its own number
+// (the study's "12_TRIa": hull 11 is not evaluated, so list places and hull numbers differ).
+std::string Numbered(size_t i, const EvaluatedDesign& d) {
+  if (!d.name.empty() && std::isdigit(static_cast<unsigned char>(d.name[0]))) return d.name;
+  return std::to_string(i + 1) + " " + d.name;
+}
 
 // Groups in order of first appearance.
 std::vector<std::string> Groups(const std::vector<EvaluatedDesign>& designs) {
