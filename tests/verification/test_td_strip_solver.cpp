@@ -13,6 +13,7 @@
 #endif
 
 #include "seakeeping/free_decay.h"
+#include "seakeeping/frequency_domain_section.h"
 #include "seakeeping/panel.h"
 #include "seakeeping/section_shapes.h"
 #include "seakeeping/strip_kernel_builder.h"
@@ -187,30 +188,25 @@ TEST_CASE("forced heave run to steady state agrees with the steady-state transfo
   CHECK(std::fabs(b33 - b_ss) <= kTolSteady * scale);
 }
 
-TEST_CASE("free decay of a floating circular cylinder released from a heave offset", "[td][verification]") {
-  // Body: half-immersed circular cylinder, mass ρπR²/2, restoring ρgB = 2ρgR, released at rest from x0.
-  // Time domain: d/dt(m v + I) = −C x with the strip's momentum I (all hydrodynamic force on the left, as in
-  // the reference paper), BDF2 in time and implicit in v (f is affine in the current velocity).
-  // Prediction: linear frequency-domain theory (free_decay.h), x/x0 = 1 − (2C/π)∫ Re H sin(ωt)/ω dω with
-  // a33(ω), b33(ω) from the steady-state transform at 80 frequencies — the route the frequency-domain
-  // solver's coefficients take in the lead's comparison. Also the single-frequency damped-oscillator
-  // estimate, which is only approximate for ζ ≈ 0.17 (reported, not tested).
-  constexpr double kTolPeriod = 0.03;  // issue 3: period and log decrement within 3%
-  constexpr double kTolLogDecrement =
-      0.03;                             // first cycle; the next (amplitude 0.3 x0) differs by ~4%, where
-                                        // the irregular-frequency ringing of both routes is relatively larger
-  constexpr double kTolHistory = 0.03;  // max |Δx|/x0 over the first 3 periods: BDF2 phase error ~(ωdt)³
-  const double R = 1.0, m = kRho * M_PI * R * R / 2, C = 2 * kRho * kG * R, x0 = 0.1 * R, dt = 0.02;
-  const auto panels = PanelSymmetricSection(SemicircleContour(R), 14);
-  const int N = 400, N_ops = 1500;  // 8 s of motion; 30 s of memory for the transform
-  const auto ops = BuildFixedSectionOperators(panels, N_ops, dt, kRho, kG);
+namespace {
+// Released half-immersed circular cylinder of radius R: mass ρπR²/2, restoring C = ρgB = 2ρgR.
+struct Release {
+  double R = 1.0, m = kRho * M_PI / 2, C = 2 * kRho * kG;
+};
+
+// Time-domain release from rest at x0 = 1: d/dt(m v + I) = −C x with the strip's momentum I (all
+// hydrodynamic force on the left, as in the reference paper), BDF2 in time and implicit in v (the force is
+// affine in the current velocity). Returns x/x0 at steps 0..N−1 (ops must hold >= N steps).
+std::vector<double> ReleaseHistory(const StripOperators& ops, const std::vector<Panel>& panels,
+                                   const Release& body, int N) {
+  const double dt = ops.Dt(), m = body.m, C = body.C;
   StripMarcher marcher(ops);
   const Eigen::VectorXd nz = HeaveNormals(panels);
-  std::vector<double> x(N), v(N), t(N);
-  x[0] = x0, v[0] = 0;
+  std::vector<double> x(N), v(N);
+  x[0] = 1.0, v[0] = 0;
   marcher.Advance(0.0 * nz);
   for (int n = 1; n < N; ++n) {
-    const double xm1 = x[n - 1], xm2 = n >= 2 ? x[n - 2] : x0, vm1 = v[n - 1], vm2 = n >= 2 ? v[n - 2] : 0.0;
+    const double xm1 = x[n - 1], xm2 = n >= 2 ? x[n - 2] : 1.0, vm1 = v[n - 1], vm2 = n >= 2 ? v[n - 2] : 0.0;
     const double f0 = marcher.Peek(0.0 * nz), f1 = marcher.Peek(nz) - f0;  // f_n = f0 + f1 v_n
     // m (3v − 4v_{n−1} + v_{n−2})/(2dt) = f0 + f1 v − C x,   x = (4x_{n−1} − x_{n−2} + 2dt v)/3
     const double lhs = 3 * m / (2 * dt) - f1 + C * 2 * dt / 3;
@@ -219,7 +215,58 @@ TEST_CASE("free decay of a floating circular cylinder released from a heave offs
     x[n] = (4 * xm1 - xm2 + 2 * dt * v[n]) / 3;
     marcher.Advance(v[n] * nz);
   }
+  return x;
+}
+
+struct DecayMeasures {
+  double period, logdec, logdec_second;
+};
+// Period between alternate zero crossings (second full cycle); log decrement between successive positive
+// peaks: the release value x0 and the first positive peak (first cycle), the first and second positive
+// peaks (second cycle).
+DecayMeasures MeasureDecay(const std::vector<double>& h, double dt) {
+  const int N = static_cast<int>(h.size());
+  std::vector<double> zero, extreme;
+  for (int n = 1; n < N; ++n)
+    if ((h[n - 1] > 0) != (h[n] > 0)) zero.push_back((n - 1 + h[n - 1] / (h[n - 1] - h[n])) * dt);
+  for (int n = 1; n + 1 < N; ++n)
+    if ((h[n] - h[n - 1]) * (h[n + 1] - h[n]) < 0) extreme.push_back(h[n]);
+  REQUIRE(zero.size() >= 5);
+  REQUIRE(extreme.size() >= 4);
+  return {zero[4] - zero[2], std::log(h[0] / extreme[1]), std::log(extreme[1] / extreme[3])};
+}
+
+std::vector<double> Times(int N, double dt) {
+  std::vector<double> t(N);
   for (int n = 0; n < N; ++n) t[n] = n * dt;
+  return t;
+}
+}  // namespace
+
+TEST_CASE("free decay of a released cylinder: marching against the transform of the same discretisation",
+          "[td][verification]") {
+  // Self-consistency of the time-domain route: the release history against linear theory (free_decay.h),
+  // x/x0 = 1 − (2C/π)∫ Re H sin(ωt)/ω dω, with a33(ω), b33(ω) from the steady-state transform of the SAME
+  // operators at 240 frequencies. (Issue 3 item 4, prediction from the frequency-domain solver: next test.)
+  // Also the single-frequency damped-oscillator estimate, only approximate for ζ ≈ 0.17 (reported).
+  // Second cycle (reported, not checked): 1.062 (march) vs 1.027 (transform). Not the time step (march 1.069,
+  // 1.062, 1.061 at dt = 0.04, 0.02, 0.01 s), not the Fourier integral (dω 0.05 → 0.0125 rad/s or range
+  // 12 → 30 rad/s: < 5e−4), but the irregular frequency: the release excites the interior mode of the
+  // source formulation, which rings undamped in the march (amplitude 0.0070 x0 at ω²R/g = 1.885, still there
+  // after 30 s), while the transform sees it only as a sampled near-pole of a33, b33 (ω²R/g = 1.80–1.88).
+  // That ringing is 7% of the second peak (0.106 x0). It is excited by the discretisation: 0.0070, 0.0032,
+  // 0.0017 x0 at 14, 28, 56 panels.
+  constexpr double kTolPeriod = 0.03;        // issue 3: period and log decrement within 3%
+  constexpr double kTolLogDecrement = 0.03;  // first cycle
+  constexpr double kTolHistory = 0.03;  // max |Δx|/x0 over the first 3 periods: BDF2 phase error ~(ωdt)³
+                                        // plus the 0.007 x0 ringing
+  const Release body;
+  const double dt = 0.02;
+  const auto panels = PanelSymmetricSection(SemicircleContour(body.R), 14);
+  const int N = 400, N_ops = 1500;  // 8 s of motion; 30 s of memory for the transform
+  const auto ops = BuildFixedSectionOperators(panels, N_ops, dt, kRho, kG);
+  const Eigen::VectorXd nz = HeaveNormals(panels);
+  const std::vector<double> xs = ReleaseHistory(ops, panels, body, N), t = Times(N, dt);
   FreeDecayInput fd;
   for (int i = 0; i < 240; ++i) {
     const double w = 0.1 + 0.05 * i;
@@ -229,31 +276,15 @@ TEST_CASE("free decay of a floating circular cylinder released from a heave offs
     fd.b33_kg_per_m_s.push_back(w * I.imag());
   }
   fd.a33_infinite_kg_per_m = -ops.MomentumCurrent(0).dot(ops.Solve(0, nz).col(0));
-  fd.mass_kg_per_m = m;
-  fd.restoring_n_per_m2 = C;
+  fd.mass_kg_per_m = body.m;
+  fd.restoring_n_per_m2 = body.C;
   const std::vector<double> predicted = FreeDecayFromCoefficients(fd, t);
-  struct Measures {
-    double period, logdec, logdec_second;
-  };
-  // Period between alternate zero crossings (second full cycle), log decrement between successive positive
-  // peaks: the release value x0 and the first positive peak, and (reported) the first and second peaks.
-  auto measure = [&](const std::vector<double>& h) {
-    std::vector<double> zero, extreme;
-    for (int n = 1; n < N; ++n)
-      if ((h[n - 1] > 0) != (h[n] > 0)) zero.push_back((n - 1 + h[n - 1] / (h[n - 1] - h[n])) * dt);
-    for (int n = 1; n + 1 < N; ++n)
-      if ((h[n] - h[n - 1]) * (h[n + 1] - h[n]) < 0) extreme.push_back(h[n]);
-    REQUIRE(zero.size() >= 5);
-    REQUIRE(extreme.size() >= 4);
-    return Measures{zero[4] - zero[2], std::log(h[0] / extreme[1]), std::log(extreme[1] / extreme[3])};
-  };
-  std::vector<double> xs(N);
-  for (int n = 0; n < N; ++n) xs[n] = x[n] / x0;
-  const Measures td = measure(xs), fdm = measure(predicted);
+  const DecayMeasures td = MeasureDecay(xs, dt), fdm = MeasureDecay(predicted, dt);
   double max_diff = 0;
   for (int n = 0; n < N && t[n] < 3 * td.period; ++n)
     max_diff = std::max(max_diff, std::fabs(xs[n] - predicted[n]));
   // Single-frequency estimate at the undamped natural frequency ω_n = sqrt(C/(m + a33(ω_n))).
+  const double m = body.m, C = body.C;
   double w = std::sqrt(C / (2 * m));
   std::complex<double> I;
   for (int it = 0; it < 30; ++it) {
@@ -263,7 +294,7 @@ TEST_CASE("free decay of a floating circular cylinder released from a heave offs
   const double zeta = w * I.imag() / (2 * (m - I.real()) * w);
   WARN("released cylinder (14 panels, dt = 0.02 s): period "
        << td.period << " s (time domain) vs " << fdm.period
-       << " s (frequency-domain coefficients); log decrement " << td.logdec << " vs " << fdm.logdec
+       << " s (transform of the time-domain operators); log decrement " << td.logdec << " vs " << fdm.logdec
        << " (next cycle " << td.logdec_second << " vs " << fdm.logdec_second << ")"
        << "; max |dx|/x0 over 3 periods " << max_diff << "; single-frequency oscillator: period "
        << 2 * M_PI / (w * std::sqrt(1 - zeta * zeta)) << " s, log decrement "
@@ -273,30 +304,84 @@ TEST_CASE("free decay of a floating circular cylinder released from a heave offs
   CHECK(max_diff <= kTolHistory);
 }
 
+TEST_CASE("free decay of a released cylinder against the frequency-domain solver's coefficients",
+          "[td][fd][verification]") {
+  // Issue 3 item 4: the time-domain release history (marching, no frequency-domain input) against the
+  // history linear theory predicts from the FREQUENCY-DOMAIN panel solver's a33(ω), b33(ω)
+  // (SolveSectionFrequencyDomain with its lid on, so the curve has no irregular frequency), same panels.
+  // Infinite-frequency added mass (used beyond the last frequency, 12 rad/s, where |C H| < 0.05, falling as
+  // ω⁻²): the frequency-domain solver at ω²R/g = 200.
+  // The frequency-domain lid is itself discretised (half as many lid panels as body panels) and adds an
+  // O(1/N) error of its own (lid on, 14 panels: a33 +7%, b33 +5% against Ursell at ω²R/g = 0.25, lid off
+  // +5%, +2%; tests/verification/test_frequency_domain_section.cpp prints them). The first-cycle log
+  // decrement of the lid-on prediction is 1.288, 1.237, 1.213 at 14, 28, 56 panels (Richardson 1.189) against
+  // the march's 1.180, 1.185, 1.188, so the issue's 3% is met from 56 panels on: checked there, 14 and 28
+  // reported. Time step 0.02 s: halving it moves the march's figures by < 0.2%.
+  constexpr double kTolPeriod = 0.03;        // issue 3
+  constexpr double kTolLogDecrement = 0.03;  // issue 3, first and second cycle
+  constexpr int kPanelsChecked = 56;
+  const Release body;
+  const double dt = 0.02;
+  const int N = 400;  // 8 s: three and a half periods
+  // Frequencies: 0.1 rad/s steps to 6 rad/s (ω_n ≈ 2.8 rad/s, the transfer function's peak), 0.5 to 12 rad/s.
+  std::vector<double> w;
+  for (int i = 0; i < 60; ++i) w.push_back(0.1 + 0.1 * i);
+  for (double ww = 6.5; ww <= 12.0 + 1e-9; ww += 0.5) w.push_back(ww);
+  FrequencyDomainOptions fo;
+  fo.rho_kg_m3 = kRho, fo.g_m_s2 = kG;  // lid automatic (on)
+  for (int np : {14, 28, 56}) {
+    const auto panels = PanelSymmetricSection(SemicircleContour(body.R), np);
+    const auto ops = BuildFixedSectionOperators(panels, N, dt, kRho, kG);
+    const std::vector<double> xs = ReleaseHistory(ops, panels, body, N);
+    FreeDecayInput in;
+    in.omega_rad_s = w;
+    for (const auto& h : SolveSectionFrequencyDomain({panels}, w, fo))
+      in.a33_kg_per_m.push_back(h.a33()), in.b33_kg_per_m_s.push_back(h.b33());
+    in.a33_infinite_kg_per_m = SolveSectionFrequencyDomain({panels}, std::sqrt(200 * kG / body.R), fo).a33();
+    in.mass_kg_per_m = body.m;
+    in.restoring_n_per_m2 = body.C;
+    const DecayMeasures td = MeasureDecay(xs, dt),
+                        fd = MeasureDecay(FreeDecayFromCoefficients(in, Times(N, dt)), dt);
+    WARN("released cylinder, " << np << " panels, dt = " << dt << " s: period " << td.period
+                               << " s (time domain) vs " << fd.period
+                               << " s (frequency-domain solver, lid on); log decrement " << td.logdec
+                               << " vs " << fd.logdec << ", second cycle " << td.logdec_second << " vs "
+                               << fd.logdec_second);
+    if (np != kPanelsChecked) continue;
+    CHECK(td.period == Approx(fd.period).epsilon(kTolPeriod));
+    CHECK(td.logdec == Approx(fd.logdec).epsilon(kTolLogDecrement));
+    CHECK(td.logdec_second == Approx(fd.logdec_second).epsilon(kTolLogDecrement));
+  }
+}
+
 TEST_CASE("heave damping equals the radiated wave energy flux", "[td][verification]") {
   // Energy balance (issue 3, "what it must show" 2): b33 from the force (momentum route) against
   // ρg²(|A+|² + |A−|²)/(2ω) from the far-field wave amplitudes of the same steady-state sources. The two use
   // different parts of the solution (near-field potential on the body vs the sources' wave-number transform),
-  // so they agree only to the O(1/N) error of flat constant panels (docs/theory.md): measured ratios 0.967,
-  // 0.951 (14 panels) and 0.982, 0.973 (28 panels) at ω²R/g = 0.25, 1; halving with each doubling of N, the
-  // issue's 2% needs ~56 panels. Halving the time step changes them by < 1e−3. Tolerance 6% at 14 panels.
-  // Frequencies avoid the irregular band around ω²R/g ≈ 1.8 (at 1.4 the ratio is already 0.91;
-  // docs/theory.md).
-  constexpr double kTolEnergy = 0.06;
+  // so they agree only to the O(1/N) error of flat constant panels (docs/theory.md): the mismatch halves with
+  // each doubling of the panels (measured 3–5% at 14, 1–3% at 28, ≤ 1.5% at 56 panels), so the issue's 2% is
+  // checked at 56 panels and the 14- and 28-panel ratios are reported. Halving the time step changes the
+  // ratios by < 1e−3.
+  // Frequencies avoid the irregular band around ω²R/g ≈ 1.8 (docs/theory.md).
+  constexpr double kTolEnergy = 0.02;  // issue 3
+  constexpr int kPanelsChecked = 56;
   const double R = 1.0;
-  const auto panels = PanelSymmetricSection(SemicircleContour(R), 14);
   const std::vector<double> nondim = {0.25, 0.5, 0.75, 1.0, 2.5};
   const double w_max = std::sqrt(nondim.back() * kG / R);
   const double dt = 2 * M_PI / w_max / 40;
   const int lags = static_cast<int>(20.0 / dt);  // 20 s ≈ 64 sqrt(R/g): near-surface memory decayed by e^{−6}
-  const auto ops = BuildFixedSectionOperators(panels, lags + 1, dt, kRho, kG);
-  for (double k : nondim) {
-    const double w = std::sqrt(k * kG / R);
-    const double b33 = w * SteadyHeaveMomentum(ops, w, lags).imag();
-    const auto A = FarFieldWaveAmplitudes(panels, SteadyHeaveSources(ops, w, lags), w, kG);
-    const double b_energy = kRho * kG * kG * (A[0] * A[0] + A[1] * A[1]) / (2 * w);
-    WARN("w^2R/g = " << k << ": b33 = " << b33 << " kg/(m s), energy flux " << b_energy << ", ratio "
-                     << b33 / b_energy);
-    CHECK(b33 == Approx(b_energy).epsilon(kTolEnergy));
+  for (int np : {14, 28, 56}) {
+    const auto panels = PanelSymmetricSection(SemicircleContour(R), np);
+    const auto ops =
+        BuildFixedSectionOperators(panels, lags + 1, dt, kRho, kG, {}, /*steady_state_only=*/true);
+    for (double k : nondim) {
+      const double w = std::sqrt(k * kG / R);
+      const double b33 = w * SteadyHeaveMomentum(ops, w, lags).imag();
+      const auto A = FarFieldWaveAmplitudes(panels, SteadyHeaveSources(ops, w, lags), w, kG);
+      const double b_energy = kRho * kG * kG * (A[0] * A[0] + A[1] * A[1]) / (2 * w);
+      WARN(np << " panels, w^2R/g = " << k << ": b33 = " << b33 << " kg/(m s), energy flux " << b_energy
+              << ", ratio " << b33 / b_energy);
+      if (np == kPanelsChecked) CHECK(b33 == Approx(b_energy).epsilon(kTolEnergy));
+    }
   }
 }
