@@ -1,7 +1,11 @@
 #include "io/section_config.h"
 
 #include <cmath>
+#include <filesystem>
 #include <sstream>
+
+#include "io/offsets_csv.h"
+#include "parametric_hull/section_geometry.h"
 
 namespace hullopt::io {
 namespace {
@@ -10,6 +14,41 @@ double Positive(YamlMap& m, const std::string& key) {
   const double v = m.Number(key);
   if (!(v > 0)) m.Fail(key, "must be > 0");
   return v;
+}
+
+// The section of an offsets CSV (ARCHITECTURE §4; a relative path is tried from the working folder, then from
+// the config's folder) at x_m [m from AP], cut at draught_m [m above baseline] and shifted so that the
+// waterline is z = 0, as a half contour keel → waterline.
+sk::HalfContour OffsetsSection(YamlMap& s) {
+  std::string file = s.String("offsets_csv");
+  const std::filesystem::path p(file), dir = std::filesystem::path(s.file()).parent_path();
+  if (p.is_relative() && !std::filesystem::exists(p) && std::filesystem::exists(dir / p)) file = (dir / p).string();
+  const double x = s.Number("x_m");
+  const double T = Positive(s, "draught_m");
+  const hull::Demihull body = ReadOffsetsCsv(file, T);
+  const double x_aft = body.stations.front().x_m, x_fwd = body.stations.back().x_m;
+  if (!(x >= x_aft && x <= x_fwd)) {
+    std::ostringstream os;
+    os << "is outside the stations of " << file << " (x from " << x_aft << " to " << x_fwd
+       << " m from the AP)";
+    s.Fail("x_m", os.str());
+  }
+  const auto wetted = hull::WettedContour(hull::InterpolateStation(body, x), T);
+  sk::HalfContour c;
+  for (const auto& q : wetted) c.push_back({q[0], q[1] - T});
+  if (c.size() < 2 || c.back()[1] < -1e-9 * T) {
+    std::ostringstream os;
+    os << "the section at x = " << x << " m does not cross the waterline z = " << T
+       << " m (dry, or its deck edge is below the waterline)";
+    s.Fail("x_m", os.str());
+  }
+  if (!(c.front()[1] < 0.0) || c.back()[0] <= 0.0) {
+    std::ostringstream os;
+    os << "the section at x = " << x << " m has no wetted area at draught " << T << " m";
+    s.Fail("x_m", os.str());
+  }
+  c.back()[1] = 0.0;  // the waterline crossing, exactly on z = 0
+  return c;
 }
 
 }  // namespace
@@ -41,13 +80,9 @@ SectionRunConfig ReadSectionConfig(YamlMap& root) {
     } catch (const std::exception& e) {
       s.Fail("area_coefficient", e.what());
     }
-  } else {  // offsets
-    s.String("offsets_csv");
-    s.Number("x_m");
-    Positive(s, "draught_m");
-    s.Fail("shape",
-           "'offsets' needs the offsets CSV reader, which is not yet available in this version; use "
-           "semicircle, rectangle or lewis");
+  } else {  // offsets: the wetted section of an offsets file at x_m (interpolated between its stations)
+    strip.shape = sk::SectionShape::kContour;
+    strip.contour = OffsetsSection(s);
   }
   strip.count = s.Integer("count", 1);
   if (strip.count < 1 || strip.count > 20) s.Fail("count", "must be an integer in 1..20");

@@ -1,14 +1,16 @@
 #pragma once
 // The `hullopt section` config (ARCHITECTURE §4 `section:` block plus `water:`), read strictly into plain
-// values.
+// values. Keys (docs/sections.md):
 //
 //   section:
-//     shape: semicircle          # semicircle {radius_m} | rectangle {beam_m, draught_m}
-//     radius_m: 1.0              # | lewis {beam_m, draught_m, area_coefficient} | offsets {offsets_csv, x_m,
-//     draught_m} count: 1                   # sections side by side in the strip ... spacing_m: 3.0 # ... at
-//     this centre spacing (required when count > 1) panels: 28                 # per section, even (default
-//     28) method: [frequency_domain] # and/or time_domain frequencies: { omega_rad_s: [0.5, 1.0, 2.0] }   #
-//     or { omega_min_rad_s: 0.5, omega_max_rad_s: 5, count: 20 }
+//     shape: semicircle     # semicircle {radius_m} | rectangle {beam_m, draught_m}
+//     radius_m: 1.0         # | lewis {beam_m, draught_m, area_coefficient}
+//                           # | offsets {offsets_csv, x_m [m from AP], draught_m [m above baseline]}
+//     count: 1              # sections side by side in the strip ...
+//     spacing_m: 3.0        # ... at this centre spacing (required when count > 1)
+//     panels: 28            # per section, even (default 28)
+//     method: [frequency_domain]   # and/or time_domain
+//     frequencies: { omega_rad_s: [0.5, 1.0, 2.0] }   # or { omega_min_rad_s: 0.5, omega_max_rad_s: 5, count: 20 }
 //   water: { rho_kg_m3: 1025, g_m_s2: 9.81 }
 #include <string>
 #include <vector>

@@ -91,11 +91,28 @@ expect_error unknown_method "section.method" "section:
   radius_m: 1
   method: [strip_theory]
 $FREQ"
-expect_error offsets_not_yet "offsets" "section:
+expect_error offsets_x_outside "section.x_m" "section:
+  shape: offsets
+  offsets_csv: data/delft372/delft372_offsets.csv
+  x_m: 3.5
+  draught_m: 0.15
+$FREQ"
+expect_error offsets_missing_x "x_m" "section:
+  shape: offsets
+  offsets_csv: data/delft372/delft372_offsets.csv
+  draught_m: 0.15
+$FREQ"
+expect_error offsets_missing_file "no_such_offsets.csv" "section:
+  shape: offsets
+  offsets_csv: no_such_offsets.csv
+  x_m: 1.5
+  draught_m: 0.15
+$FREQ"
+expect_error offsets_bad_draught "section.draught_m" "section:
   shape: offsets
   offsets_csv: data/delft372/delft372_offsets.csv
   x_m: 1.5
-  draught_m: 0.15
+  draught_m: 0
 $FREQ"
 expect_error misspelt_key "section.radius" "section:
   shape: semicircle
@@ -136,4 +153,34 @@ if grep -qi 'nan\|inf' "$TMP/good/section.csv"; then echo "FAIL non-finite value
 for f in section.svg config.resolved.yaml VERSION; do
   [ -s "$TMP/good/$f" ] || { echo "FAIL missing $f"; fail=1; }
 done
+# A station of an offsets file against the closed-form shape: a prism whose stations are half-circles of
+# radius 1 m (91 points each, centre on the waterline at draught 1 m) gives the semicircle's coefficients. The
+# two contours differ only in how finely the arc is sampled (91 points against 400), which moves the panel
+# end points by O((π/180)²) of R, so 0.2% is a generous bound; a wrong station, draught shift or orientation
+# changes them by tens of per cent.
+python3 - "$TMP/circle_offsets.csv" <<'PY'
+import math, sys
+with open(sys.argv[1], "w") as f:
+    f.write("x_m,y_m,z_m\n")
+    for x in (0.0, 2.0):
+        for i in range(91):
+            a = math.pi / 2 * i / 90  # from the keel (y = 0, z = 0) to the waterline (y = 1, z = 1)
+            f.write("%.1f,%.12f,%.12f\n" % (x, math.sin(a), 1 - math.cos(a)))
+PY
+for shape in semicircle offsets; do
+  if [ $shape = semicircle ]; then body="  radius_m: 1.0"; else
+    body="  offsets_csv: $TMP/circle_offsets.csv
+  x_m: 1.0
+  draught_m: 1.0"; fi
+  printf 'section:\n  shape: %s\n%s\n  panels: 14\n  method: [frequency_domain, time_domain]\n  frequencies: { omega_rad_s: [1.0, 2.0, 3.0] }\n' \
+    "$shape" "$body" > "$TMP/$shape.yaml"
+  "$BIN" section "$TMP/$shape.yaml" --out "$TMP/$shape" > /dev/null || { echo "FAIL $shape run"; fail=1; }
+done
+if paste -d, "$TMP/semicircle/section.csv" "$TMP/offsets/section.csv" | awk -F, 'NR > 1 {
+     for (c = 3; c <= 4; ++c) { d = $c - $(c + 4); if (d < 0) d = -d; s = $c < 0 ? -$c : $c;
+       if (d > 0.002 * s + 1e-9) { print "differ: " $0; bad = 1 } } } END { exit bad }'; then
+  echo "ok   offsets station equals the semicircle within 0.2%"
+else
+  echo "FAIL offsets station against the semicircle"; fail=1
+fi
 exit $fail
