@@ -73,7 +73,8 @@ void RunOptimize(const OptimizeOptions& o) {
   CampaignJournal journal(o.out, "history.csv", layout, lc.config_hash, cs, evaluator.QuantityNames().size());
 
   opt::NloptDriver driver(def, evaluator);
-  Progress progress("optimize", 1L + static_cast<long>(def.starts) * def.stopping.max_evaluations,
+  const long per_run = def.stopping.max_evaluations + (def.polish_algorithm.empty() ? 0 : def.polish_max_evaluations);
+  Progress progress("optimize", 1L + static_cast<long>(def.starts) * per_run,
                     rank == 0 && !o.quiet);
   auto add = [&](const opt::EvaluationRecord& rec) {
     journal.Add(rec);
@@ -151,6 +152,11 @@ void RunOptimize(const OptimizeOptions& o) {
       j["start"] = Named(def.VariableNames(), rr.start);
       j["evaluations"] = rr.evaluations;
       j["status"] = rr.status;
+      if (!def.polish_algorithm.empty()) {
+        j["polish_algorithm"] = def.polish_algorithm;
+        j["polish_evaluations"] = rr.polish_evaluations;
+        j["polish_status"] = rr.polish_status.empty() ? "SKIPPED (no feasible point)" : rr.polish_status;
+      }
       j["found_feasible"] = rr.found_feasible;
       if (rr.found_feasible) {
         j["best_objective"] = rr.best_objective;
@@ -189,6 +195,7 @@ void RunOptimize(const OptimizeOptions& o) {
   s["tool"] = std::string("hullopt ") + kVersion;
   s["command"] = "optimize";
   s["algorithm"] = def.algorithm;
+  if (!def.polish_algorithm.empty()) s["polish_algorithm"] = def.polish_algorithm;
   s["evaluations"] = recs.size();
   s["computed_evaluations"] = static_cast<long>(recs.size()) - journal.replayed();
   s["replayed_evaluations"] = journal.replayed();

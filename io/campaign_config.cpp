@@ -18,7 +18,8 @@ CampaignConfig ReadCampaignConfig(YamlMap& root, const YAML::Node& raw_root, Cam
 
   // Keys of the other command are accepted (one config for both) and not recorded.
   if (explore) {
-    for (const char* k : {"algorithm", "max_evaluations", "xtol_rel", "ftol_rel", "starts", "penalty_weight"})
+    for (const char* k :
+         {"algorithm", "max_evaluations", "xtol_rel", "ftol_rel", "starts", "penalty_weight", "polish"})
       b.Skip(k);
     cfg.explore.samples = b.Integer("samples", cfg.explore.samples);
     cfg.explore.method = b.Choice("method", {"sobol", "lhs"}, cfg.explore.method);
@@ -32,6 +33,14 @@ CampaignConfig ReadCampaignConfig(YamlMap& root, const YAML::Node& raw_root, Cam
     d.stopping.ftol_rel = b.Number("ftol_rel", d.stopping.ftol_rel);
     d.starts = b.Integer("starts", d.starts);
     d.penalty_weight = b.Number("penalty_weight", d.penalty_weight);
+    if (b.Has("polish")) {
+      YamlMap polish = b.Map("polish");
+      d.polish_algorithm = polish.String("algorithm");
+      d.polish_max_evaluations = polish.Integer("max_evaluations", d.polish_max_evaluations);
+      polish.Finish();
+    } else {
+      b.Skip("polish");
+    }
   }
   const int seed = b.Integer("seed", 1);
   if (seed < 0) b.Fail("seed", "must be >= 0");

@@ -125,6 +125,16 @@ bool CampaignDefinition::IsValid(std::string* error) const {
   if (!std::isfinite(stopping.xtol_rel) || !std::isfinite(stopping.ftol_rel)) {
     return Fail(error, "xtol_rel/ftol_rel must be finite numbers");
   }
+  if (!polish_algorithm.empty()) {
+    if (!IsNloptAlgorithm(polish_algorithm) || NeedsGradient(polish_algorithm) ||
+        NeedsSubsidiaryOptimizer(polish_algorithm) || IsGlobal(polish_algorithm)) {
+      return Fail(error, "polish.algorithm '" + polish_algorithm +
+                             "' must be a derivative-free local NLopt algorithm (LN_*, e.g. LN_COBYLA)");
+    }
+    if (polish_max_evaluations < 1) {
+      return Fail(error, "polish.max_evaluations = " + std::to_string(polish_max_evaluations) + ": must be >= 1");
+    }
+  }
   if (starts < 1) return Fail(error, "starts = " + std::to_string(starts) + ": must be >= 1");
   if (!(penalty_weight > 0.0) || !std::isfinite(penalty_weight)) {
     return Fail(error, "penalty_weight = " + Num(penalty_weight) + ": must be a positive number");

@@ -45,6 +45,11 @@ struct CampaignDefinition {
   std::string algorithm = "LN_COBYLA";  ///< NLopt algorithm name
   StoppingCriteria stopping;
   int starts = 1;          ///< multistart runs; run 0 starts at the base design
+  /// Optional local polish of every run: a second NLopt run with this local (LN_*) algorithm from the run's
+  /// best feasible point, up to polish_max_evaluations more evaluations, logged as steps of the same run.
+  /// NLopt's advice for global algorithms, which locate the basin but converge slowly within it. Empty: none.
+  std::string polish_algorithm;
+  int polish_max_evaluations = 200;
   std::uint64_t seed = 1;  ///< seeds multistart start points, stochastic algorithms and LHS
   /// Penalty weight for the penalty method (algorithms without inequality constraints): the objective of
   /// a point violating constraints becomes f + penalty_weight·Σ max(0, g_j)/scale_j. [objective units]

@@ -56,6 +56,7 @@ struct RunState {
   bool found_feasible = false;
   double best_objective = 0.0;
   std::vector<double> best_x;
+  bool penalise = false;  // the current stage's algorithm sees the exact penalty (no native constraints)
   std::exception_ptr error;
 
   const EvaluationRecord& At(unsigned n, const double* x) {
@@ -83,7 +84,7 @@ double Objective(unsigned n, const double* x, double* grad, void* data) {
   (void)grad;  // derivative-free algorithms only (CampaignDefinition::IsValid)
   try {
     const EvaluationRecord& rec = s->At(n, x);
-    return s->driver->PenalisedObjective(rec, s->has_worst ? s->worst_seen : 0.0);
+    return s->driver->PenalisedObjective(rec, s->has_worst ? s->worst_seen : 0.0, s->penalise);
   } catch (...) {
     s->error = std::current_exception();
     throw nlopt::forced_stop();
@@ -106,11 +107,7 @@ void Constraints(unsigned m, double* result, unsigned n, const double* x, double
 }  // namespace
 
 NloptDriver::NloptDriver(const CampaignDefinition& campaign, Evaluator& evaluator)
-    : campaign_(campaign),
-      evaluator_(evaluator),
-      constraints_(campaign, evaluator.QuantityNames()),
-      native_constraints_(SupportsInequalityConstraints(campaign.algorithm)),
-      uses_auglag_(!native_constraints_ && !IsGlobal(campaign.algorithm) && !campaign.constraints.empty()) {}
+    : campaign_(campaign), evaluator_(evaluator), constraints_(campaign, evaluator.QuantityNames()) {}
 
 std::vector<double> NloptDriver::StartPoint(int run) const {
   if (run == 0) return campaign_.StartPoint();
@@ -120,9 +117,9 @@ std::vector<double> NloptDriver::StartPoint(int run) const {
   return x;
 }
 
-double NloptDriver::PenalisedObjective(const EvaluationRecord& rec, double worst_seen) const {
+double NloptDriver::PenalisedObjective(const EvaluationRecord& rec, double worst_seen, bool penalise) const {
   if (!rec.result.produced) return worst_seen + campaign_.penalty_weight;
-  if (native_constraints_ || uses_auglag_ || constraints_.size() == 0) return rec.result.objective;
+  if (!penalise || constraints_.size() == 0) return rec.result.objective;
   return rec.result.objective + campaign_.penalty_weight * constraints_.Violation(rec.x, rec.result);
 }
 
@@ -166,51 +163,64 @@ RunResult NloptDriver::Run(int run, const ReplayLookup& replay, const RecordSink
   out.run = run;
   out.start = StartPoint(run);
 
-  // Local algorithms without native constraints run inside NLopt's augmented Lagrangian (AUGLAG), which adds
-  // a smooth, adaptively weighted penalty and converges onto the constraint boundary; global ones without
-  // native constraints see an exact (L1) penalty in the objective (PenalisedObjective).
-  const bool use_auglag = uses_auglag_;
-  nlopt::opt opt(use_auglag ? "AUGLAG" : campaign_.algorithm.c_str(), n);
-  auto set_common = [&](nlopt::opt& o) {
-    o.set_lower_bounds(campaign_.LowerBounds());
-    o.set_upper_bounds(campaign_.UpperBounds());
-    o.set_maxeval(campaign_.stopping.max_evaluations);
-    if (campaign_.stopping.xtol_rel > 0) o.set_xtol_rel(campaign_.stopping.xtol_rel);
-    if (campaign_.stopping.ftol_rel > 0) o.set_ftol_rel(campaign_.stopping.ftol_rel);
-  };
-  set_common(opt);
-  if (use_auglag) {
-    nlopt::opt local(campaign_.algorithm.c_str(), n);
-    set_common(local);
-    opt.set_local_optimizer(local);
-  }
-  // Stochastic algorithms draw from NLopt's global generator: seed it per run so runs are reproducible
-  // regardless of which process (MPI rank) executes them.
-  nlopt::srand(static_cast<unsigned long>(RunSeed(campaign_.seed, run) >> 1));
-
   RunState state;
   state.driver = this;
   state.sink = &sink;
   state.evaluate = [&](int step, const std::vector<double>& x) { return Evaluate(run, step, x, replay); };
-  opt.set_min_objective(Objective, &state);
-  if ((native_constraints_ || use_auglag) && constraints_.size() > 0) {
-    opt.add_inequality_mconstraint(Constraints, &state, std::vector<double>(constraints_.size(), 0.0));
-  }
 
-  std::vector<double> x = out.start;
-  double f = 0.0;
-  try {
-    out.status = ResultName(opt.optimize(x, f));
-  } catch (const nlopt::forced_stop&) {
+  // One NLopt optimisation of `algorithm` from x0 with at most max_eval evaluations; returns its status.
+  // Local algorithms without native constraints run inside NLopt's augmented Lagrangian (AUGLAG), which adds
+  // a smooth, adaptively weighted penalty and converges onto the constraint boundary; global ones without
+  // native constraints see an exact (L1) penalty in the objective (PenalisedObjective).
+  auto optimize = [&](const std::string& algorithm, int max_eval, std::vector<double> x) -> std::string {
+    const bool native = SupportsInequalityConstraints(algorithm);
+    const bool use_auglag = !native && !IsGlobal(algorithm) && constraints_.size() > 0;
+    state.penalise = !native && !use_auglag;
+    nlopt::opt opt(use_auglag ? "AUGLAG" : algorithm.c_str(), n);
+    auto set_common = [&](nlopt::opt& o) {
+      o.set_lower_bounds(campaign_.LowerBounds());
+      o.set_upper_bounds(campaign_.UpperBounds());
+      o.set_maxeval(max_eval);
+      if (campaign_.stopping.xtol_rel > 0) o.set_xtol_rel(campaign_.stopping.xtol_rel);
+      if (campaign_.stopping.ftol_rel > 0) o.set_ftol_rel(campaign_.stopping.ftol_rel);
+    };
+    set_common(opt);
+    if (use_auglag) {
+      nlopt::opt local(algorithm.c_str(), n);
+      set_common(local);
+      opt.set_local_optimizer(local);
+    }
+    opt.set_min_objective(Objective, &state);
+    if ((native || use_auglag) && constraints_.size() > 0) {
+      opt.add_inequality_mconstraint(Constraints, &state, std::vector<double>(constraints_.size(), 0.0));
+    }
+    double f = 0.0;
+    std::string status;
+    try {
+      status = ResultName(opt.optimize(x, f));
+    } catch (const nlopt::forced_stop&) {
+      if (state.error) std::rethrow_exception(state.error);
+      status = "FORCED_STOP";
+    } catch (const nlopt::roundoff_limited&) {
+      status = "ROUNDOFF_LIMITED";  // result still usable: the best point found so far is kept below
+    } catch (const std::runtime_error& e) {
+      if (state.error) std::rethrow_exception(state.error);
+      status = std::string("FAILURE: ") + e.what();
+    }
     if (state.error) std::rethrow_exception(state.error);
-    out.status = "FORCED_STOP";
-  } catch (const nlopt::roundoff_limited&) {
-    out.status = "ROUNDOFF_LIMITED";  // result still usable: the best point found so far is kept below
-  } catch (const std::runtime_error& e) {
-    if (state.error) std::rethrow_exception(state.error);
-    out.status = std::string("FAILURE: ") + e.what();
+    return status;
+  };
+
+  // Stochastic algorithms draw from NLopt's global generator: seed it per run so runs are reproducible
+  // regardless of which process (MPI rank) executes them.
+  nlopt::srand(static_cast<unsigned long>(RunSeed(campaign_.seed, run) >> 1));
+  out.status = optimize(campaign_.algorithm, campaign_.stopping.max_evaluations, out.start);
+  if (!campaign_.polish_algorithm.empty() && state.found_feasible) {
+    const int before = state.steps;
+    out.polish_status =
+        optimize(campaign_.polish_algorithm, campaign_.polish_max_evaluations, state.best_x);
+    out.polish_evaluations = state.steps - before;
   }
-  if (state.error) std::rethrow_exception(state.error);
   out.evaluations = state.steps;
   out.replayed = state.replayed;
   out.found_feasible = state.found_feasible;

@@ -28,6 +28,8 @@ struct RunResult {
   int evaluations = 0;  ///< evaluations of this run (computed + replayed)
   int replayed = 0;     ///< of which replayed from the log
   std::string status;   ///< NLopt's stopping reason ("MAXEVAL_REACHED", "XTOL_REACHED", ...)
+  int polish_evaluations = 0;  ///< evaluations of the polish stage (included in `evaluations`)
+  std::string polish_status;   ///< its stopping reason; empty without a polish stage
 };
 
 class NloptDriver {
@@ -42,16 +44,17 @@ class NloptDriver {
   /// Evaluates the base design (run −1, step 0), replaying it if logged.
   EvaluationRecord EvaluateBaseline(const ReplayLookup& replay, const RecordSink& sink);
 
-  /// Runs multistart run `run` to its stopping criteria. Every evaluation (replayed or computed) goes to sink
+  /// Runs multistart run `run` to its stopping criteria, then its polish stage if the campaign has one (from the
+  /// run's best feasible point; skipped when none is feasible). Every evaluation (replayed or computed) goes to sink
   /// in order. Throws ReplayMismatch if the log disagrees with the sequence, and rethrows any non-domain
   /// error of the evaluator.
   RunResult Run(int run, const ReplayLookup& replay, const RecordSink& sink);
 
   const ConstraintSet& constraints() const { return constraints_; }
 
-  /// Objective NLopt sees for a record: f, or f + penalty for constraint violation when the algorithm has no
-  /// native constraints; for a refused design worst_seen + penalty_weight.
-  double PenalisedObjective(const EvaluationRecord& rec, double worst_seen) const;
+  /// Objective NLopt sees for a record: f, or f + penalty for constraint violation when `penalise` (an
+  /// algorithm with neither native constraints nor AUGLAG); for a refused design worst_seen + penalty_weight.
+  double PenalisedObjective(const EvaluationRecord& rec, double worst_seen, bool penalise) const;
 
  private:
   EvaluationRecord Evaluate(int run, int step, const std::vector<double>& x, const ReplayLookup& replay);
@@ -61,8 +64,6 @@ class NloptDriver {
   bool has_baseline_ = false;
   Evaluator& evaluator_;
   ConstraintSet constraints_;
-  bool native_constraints_;
-  bool uses_auglag_;  // local algorithm without native constraints: wrapped in NLopt's AUGLAG
 };
 
 }  // namespace hullopt::opt

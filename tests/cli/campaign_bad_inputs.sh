@@ -49,6 +49,20 @@ expect_error unknown_algorithm "'LN_COBYLAA' is not an NLopt algorithm" optimize
   start: { x1: 0 }
   objective: { analytic: sphere }
 Y
+expect_error global_polish "polish.algorithm 'GN_ISRES' must be a derivative-free local" optimize <<'Y'
+  algorithm: GN_ISRES
+  polish: { algorithm: GN_ISRES }
+  variables: { x1: [-2, 2] }
+  start: { x1: 0 }
+  objective: { analytic: sphere }
+Y
+expect_error polish_misspelt "unknown key 'optimize.polish.max_evals'" optimize <<'Y'
+  algorithm: GN_ISRES
+  polish: { algorithm: LN_COBYLA, max_evals: 10 }
+  variables: { x1: [-2, 2] }
+  start: { x1: 0 }
+  objective: { analytic: sphere }
+Y
 expect_error start_outside "start value 3 is outside the bounds" optimize <<'Y'
   variables: { x1: [-2, 2] }
   start: { x1: 3 }

@@ -22,6 +22,14 @@ feasible=$(awk -F, 'NR==1{for(i=1;i<=NF;i++) if($i=="feasible") f=i; next} $f==1
 [ "$feasible" -ge 1 ] || fail "no feasible evaluation in the history"
 diff <(strip "$work/t1/history.csv") <(strip "$work/t2/history.csv") > /dev/null || fail "1 and 2 threads differ"
 echo "ok: history.csv of the MSI campaign ($rows evaluations) identical with 1 and 2 threads"
+# explore over the same box (the default config's samples/method keys), 6 Sobol samples, 1 and 2 threads.
+sed -e 's/samples: [0-9]*/samples: 6/' configs/optimize-catamaran.yaml > "$work/explore.yaml"
+"$HULLOPT" explore "$work/explore.yaml" --out "$work/x1" --threads 1 --quiet || fail "explore 1 thread"
+"$HULLOPT" explore "$work/explore.yaml" --out "$work/x2" --threads 2 --quiet || fail "explore 2 threads"
+[ "$(wc -l < "$work/x1/samples.csv")" -eq 7 ] || fail "explore: expected 6 samples"
+diff <(strip "$work/x1/samples.csv") <(strip "$work/x2/samples.csv") > /dev/null || fail "explore: 1 and 2 threads differ"
+echo "ok: samples.csv of the MSI campaign identical with 1 and 2 threads"
+
 # Kill/resume on the real objective (issue 6 item 3; the analytic-objective version with more kill points is
 # optimize_kill_resume.sh): SIGKILL at a random moment, restart with the same command, same history as t1.
 "$HULLOPT" optimize "$work/campaign.yaml" --out "$work/k" --threads 1 --quiet &
@@ -39,6 +47,10 @@ if command -v mpirun > /dev/null && "$HULLOPT_MPI" --version | grep -q mpi; then
     diff <(strip "$work/t1/history.csv") <(strip "$work/m2/history.csv") > /dev/null || fail "mpirun -n 2 differs"
     grep -q '"mpi_ranks": 2' "$work/m2/summary.json" || fail "summary does not show 2 ranks"
     echo "ok: history.csv of the MSI campaign identical under mpirun -n 2"
+    mpirun --allow-run-as-root --oversubscribe -n 2 "$HULLOPT_MPI" explore "$work/explore.yaml" --out "$work/xm" \
+      --threads 1 --quiet > "$work/mpi_x.log" 2>&1 || { cat "$work/mpi_x.log" >&2; fail "mpirun explore"; }
+    diff <(strip "$work/x1/samples.csv") <(strip "$work/xm/samples.csv") > /dev/null || fail "explore: mpirun -n 2 differs"
+    echo "ok: samples.csv of the MSI campaign identical under mpirun -n 2"
   else
     echo "SKIP: mpirun does not run here:"; head -3 "$work/mpi.log"
   fi
