@@ -1,7 +1,8 @@
 // RAO sweep timing (issue 4, item 5): 60 frequencies, 40 sections × 14 panels, one demihull (Delft 372 at
 // Fn 0.75, the paper's transient Green-function kernel). Periodic path (2b) with 1 and 2 OpenMP threads, the
 // time-marching path (2a) on the same sweep, and the kernel build (once per hull and speed) with 1 and 2
-// threads. Run: build/bench/bench_rao (quote medians with the core count).
+// threads, also with the strip steps at the cell faces (41 steps, StationLayout::kCellFaces). Run:
+// build/bench/bench_rao (quote medians with the core count).
 #include <benchmark/benchmark.h>
 #ifdef _OPENMP
 #include <omp.h>
@@ -29,13 +30,15 @@ struct Demihull {
   double speed = 0.75 * std::sqrt(kG * 3.0);
   hullopt::hull::MassProperties mass = hullopt::testing::Delft372Mass();
   std::vector<double> omega;
-  sk::StripKernel geometry, kernel;
+  sk::StripKernel geometry, kernel, geometry_faces;
   Demihull() {
     mass.mass_kg *= 0.5;  // one demihull alone
     sk::StripGeometryOptions o;
     o.body = 0;
     geometry = sk::StripKernelGeometry(hull, o, speed, kRho, kG);
     kernel = geometry;
+    o.layout = sk::StationLayout::kCellFaces;
+    geometry_faces = sk::StripKernelGeometry(hull, o, speed, kRho, kG);
     sk::TransientGreenKernelBuilder()(&kernel);
     omega = sk::WaveFrequencies(sk::FrequencySpec::Range(sk::FrequencySpec::Quantity::kOmegaE, 3.0, 25.0, 60),
                                 speed, kG, 3.0);
@@ -87,6 +90,22 @@ void BM_KernelBuild(benchmark::State& state) {
   }
 }
 BENCHMARK(BM_KernelBuild)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(1);
+
+void BM_KernelBuildCellFaces(benchmark::State& state) {
+  const auto& d = TheDemihull();
+  SetThreads(static_cast<int>(state.range(0)));
+  for (auto _ : state) {
+    sk::StripKernel k = d.geometry_faces;
+    sk::TransientGreenKernelBuilder()(&k);
+    benchmark::DoNotOptimize(k.force.data());
+  }
+}
+BENCHMARK(BM_KernelBuildCellFaces)
+    ->Arg(1)
+    ->Arg(2)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime()
+    ->Iterations(1);
 
 }  // namespace
 

@@ -81,6 +81,7 @@ HeadSeaShipModel::HeadSeaShipModel(const StripKernel& kernel, const hull::MassPr
     StationData& s = stations_[n];
     const auto np = static_cast<Eigen::Index>(ps.size());
     s.x_cg_m = kernel.x_m[n] - mass.lcg_m_from_ap;
+    s.weight_m = kernel.Weight(n);
     s.nz.resize(np);
     s.z_mid.resize(np);
     s.dy.resize(np);

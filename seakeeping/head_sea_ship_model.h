@@ -12,10 +12,11 @@
 //       velocity
 //                                           relative to the local water surface
 // with v_n = ẋ3 − x_n ẋ5 + U x5 the section's vertical velocity seen in the earth-fixed strip. The kernel
-// input on panel i is V_i = n_z,i (v_n − w(x_n, z_i, t)). Hull force F3 = Σ f_n Δx, moment F5 = −Σ x_n f_n
-// Δx, and M ẍ3 = F3, I5 ẍ5 = F5 with only the ship's own mass and inertia on the right (paper §2). Static
-// equilibrium is assumed (weight = buoyancy, LCG over LCB); the hydrostatic pitch stiffness is the strip sum
-// ρ g Σ B x² Δx (the small ρ g ∇ (z_B − z_G) term of a 3D C55 is not in a strip model).
+// input on panel i is V_i = n_z,i (v_n − w(x_n, z_i, t)). Hull force F3 = Σ f_n w_n, moment F5 = −Σ x_n f_n
+// w_n (w_n = StripKernel::Weight(n): Δx, or Δx/2 at the end faces of StationLayout::kCellFaces), and M ẍ3 =
+// F3, I5 ẍ5 = F5 with only the ship's own mass and inertia on the right (paper §2). Static equilibrium is
+// assumed (weight = buoyancy, LCG over LCB); the hydrostatic pitch stiffness is the strip sum ρ g Σ B x² Δx
+// (the small ρ g ∇ (z_B − z_G) term of a 3D C55 is not in a strip model).
 #include <Eigen/Dense>
 #include <complex>
 #include <string>
@@ -36,6 +37,7 @@ struct MotionOptions {
 /// Mean wetted section held at one step of the strip.
 struct StationData {
   double x_cg_m = 0.0;     ///< [m] station forward of the CG
+  double weight_m = 0.0;   ///< [m] weight of the station in the hull sums (StripKernel::Weight)
   double beam_m = 0.0;     ///< [m] waterline beam of all bodies in the strip, −Σ Δy over the panels
   Eigen::VectorXd nz;      ///< [-] vertical component of the unit normal (into the fluid) per panel
   Eigen::VectorXd z_mid;   ///< [m] collocation-point depth per panel (≤ 0)

@@ -42,9 +42,11 @@ void FillImpulsiveStripKernel(StripKernel* k) {
   k->force.assign(N, {});
   const double c = k->rho_kg_m3 / k->dt_s;
   for (int n = 0; n < N; ++n) {
+    // Rows scaled by dx/weight (2 at the end faces of kCellFaces): the hull sum telescopes to U Φ_T exactly.
+    const double cn = k->layout == StationLayout::kCellMidpoints ? c : c * k->dx_m / k->Weight(n);
     for (int m = 0; m <= n; ++m) k->force[n].push_back(Eigen::RowVectorXd::Zero(k->panels[m].size()));
-    k->force[n][n] = c * q[n];
-    if (n >= 1) k->force[n][n - 1] = -c * q[n - 1];
+    k->force[n][n] = cn * q[n];
+    if (n >= 1) k->force[n][n - 1] = -cn * q[n - 1];
   }
 }
 

@@ -22,7 +22,7 @@ std::array<std::complex<double>, 2> SolvePeriodicFrequency(const HeadSeaShipMode
                                                            PeriodicKinematics kinematics) {
   const auto& st = model.stations();
   const int N = model.Steps();
-  const double U = model.speed(), g = model.g(), rho = model.rho(), dx = model.dx(), dt = model.dt();
+  const double U = model.speed(), g = model.g(), rho = model.rho(), dt = model.dt();
   const double damp = model.DampingFactor();
   const double we = HeadSeaEncounterFrequency(w, U, g);
   const double k = w * w / g;
@@ -51,7 +51,7 @@ std::array<std::complex<double>, 2> SolvePeriodicFrequency(const HeadSeaShipMode
       a += l * (-iw) * strip.dot(n, m, nz_ekz[m], we) * eikx[m];
     }
     // Hydrostatic restoring, Froude–Krylov and the empirical damping (see head_sea_ship_model.h).
-    const double B = s.beam_m, x = s.x_cg_m;
+    const double B = s.beam_m, x = s.x_cg_m, dx = s.weight_m;
     h += -rho * g * B - damp * B * iwe;
     p += rho * g * B * x - damp * B * (U - iwe * x);
     a += rho * g * s.FroudeKrylovWidth(k) * eikx[n] + damp * B * iw * eikx[n];

@@ -11,7 +11,9 @@ namespace hullopt::sk {
 
 StripKernelBuilder TransientGreenKernelBuilder() {
   return [](StripKernel* k) {
-    StripKernel built = BuildStripKernelMirrorReduced(k->panels, k->x_m, k->dt_s, k->rho_kg_m3, k->g_m_s2);
+    StripOperatorOptions o;
+    o.layout = k->layout;
+    StripKernel built = BuildStripKernelMirrorReduced(k->panels, k->x_m, k->dt_s, k->rho_kg_m3, k->g_m_s2, o);
     k->force = std::move(built.force);
   };
 }
@@ -20,6 +22,7 @@ bool RaoSolverOptions::IsValid(std::string* error) const {
   StripGeometryOptions g;
   g.sections = sections;
   g.panels = panels;
+  g.layout = layout;
   if (!g.IsValid(error)) return false;
   if (!motion.IsValid(error)) return false;
   if (path == Path::kTimeMarching && !marching.IsValid(error)) return false;
@@ -34,6 +37,7 @@ StripKernel BuildHullStripKernel(const hull::HullForm& hull, const RaoSolverOpti
   StripGeometryOptions g;
   g.sections = options.sections;
   g.panels = options.panels;
+  g.layout = options.layout;
   if (options.interaction || (hull.bodies.size() == 1 && hull.bodies[0].y_centre_m == 0.0)) {
     StripKernel k = StripKernelGeometry(hull, g, speed_m_s, rho_kg_m3, g_m_s2);
     builder(&k);

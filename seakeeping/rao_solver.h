@@ -28,6 +28,7 @@ struct RaoSolverOptions {
   Method method = Method::kTimeDomainStrip;  ///< strip theory: frequency-domain sections (builder unused)
   int sections = 40;                         ///< strip steps along the hull (paper 40)
   int panels = 14;                           ///< panels per wetted section of one body (paper 14)
+  StationLayout layout = kDefaultStationLayout;  ///< where the strip steps sit (strip_kernel.h)
   bool interaction = true;  ///< multihull bodies share the strips; false: each body alone, forces added
   Path path = Path::kPeriodic;
   MotionOptions motion;      ///< Cs, hull name

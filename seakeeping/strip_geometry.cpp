@@ -17,6 +17,8 @@ bool StripGeometryOptions::IsValid(std::string* error) const {
     os << "sections = " << sections << ": must be >= 2";
   } else if (panels < 4 || panels % 2 != 0) {
     os << "panels = " << panels << ": must be even and >= 4";
+  } else if (layout == StationLayout::kCellFaces && sections < 3) {
+    os << "sections = " << sections << ": must be >= 3 with stations at the cell faces";
   } else if (body < -1) {
     os << "body = " << body << ": must be -1 (all bodies) or a body index";
   }
@@ -58,9 +60,15 @@ StripKernel StripKernelGeometry(const hull::HullForm& hull, const StripGeometryO
   k.dt_s = k.dx_m / speed_m_s;
   k.rho_kg_m3 = rho_kg_m3;
   k.g_m_s2 = g_m_s2;
+  k.layout = options.layout;
   const double T = hull.draught_m;
-  for (int n = 0; n < options.sections; ++n) {
-    const double x = x_fwd - (n + 0.5) * k.dx_m;
+  const int steps = StationCount(options.layout, options.sections);
+  const double offset = options.layout == StationLayout::kCellFaces ? 0.0 : 0.5;
+  for (int n = 0; n < steps; ++n) {
+    // The last face is x_aft itself (not x_fwd − N·Δx, which rounding can put outside the hull).
+    const double x = options.layout == StationLayout::kCellFaces && n == options.sections
+                         ? x_aft
+                         : x_fwd - (n + offset) * k.dx_m;
     std::vector<Panel> panels;
     for (const auto* b : bodies) {
       const hull::Station st = hull::InterpolateStation(*b, x);
@@ -72,6 +80,11 @@ StripKernel StripKernelGeometry(const hull::HullForm& hull, const StripGeometryO
       for (std::size_t i = 1; i < half.size(); ++i)
         girth += std::hypot(half[i][0] - half[i - 1][0], half[i][1] - half[i - 1][1]);
       if (girth <= 1e-9 * T) continue;  // keel exactly at the waterline: no wetted girth
+      // A section of zero thickness (a knife-edge stem, met at the bow face of kCellFaces) is a plate in its
+      // own plane: vertical motion does not disturb the water, and its panels would make a singular system.
+      double half_breadth = 0.0;
+      for (const auto& p : half) half_breadth = std::max(half_breadth, std::fabs(p[0]));
+      if (half_breadth <= 1e-9 * T) continue;
       if (std::fabs(half.back()[1]) > 1e-9 * T) {
         std::ostringstream os;
         os << "body '" << b->role << "' at x = " << x
@@ -96,8 +109,8 @@ StripKernel StripKernelGeometry(const hull::HullForm& hull, const StripGeometryO
     k.x_m.push_back(x);
     k.panels.push_back(std::move(panels));
   }
-  k.force.resize(options.sections);
-  for (int n = 0; n < options.sections; ++n)
+  k.force.resize(steps);
+  for (int n = 0; n < steps; ++n)
     for (int m = 0; m <= n; ++m) k.force[n].push_back(Eigen::RowVectorXd::Zero(k.panels[m].size()));
   return k;
 }
@@ -108,8 +121,10 @@ StripKernel CombineIndependentKernels(const std::vector<StripKernel>& parts) {
   const int N = out.Steps();
   for (std::size_t p = 1; p < parts.size(); ++p) {
     const StripKernel& q = parts[p];
-    if (q.Steps() != N || q.dx_m != out.dx_m || q.dt_s != out.dt_s || q.x_m != out.x_m)
-      throw std::invalid_argument("CombineIndependentKernels: kernels differ in steps, dx, dt or stations");
+    if (q.Steps() != N || q.dx_m != out.dx_m || q.dt_s != out.dt_s || q.x_m != out.x_m ||
+        q.layout != out.layout)
+      throw std::invalid_argument(
+          "CombineIndependentKernels: kernels differ in steps, dx, dt, stations or layout");
     // The combined section's force is the sum of both bodies' forces, each from its own panels only: the row
     // over the concatenated panels is the two rows side by side.
     for (int n = 0; n < N; ++n) {

@@ -1,8 +1,10 @@
 #pragma once
 // From a HullForm to the panelled sections a strip of water passes through (the geometry half of a
-// StripKernel). The strip advances Δx = L_span/sections per step; step n holds the hull at the strip midpoint
-// x_n = x_fwd − (n + ½)Δx [m from AP], from the bow (n = 0) to the stern (n = sections − 1), where x_fwd and
-// x_aft are the extreme stations of all bodies of the hull (also when only one body is panelled). Each body's
+// StripKernel). The strip advances Δx = L_span/sections per step; step n holds the hull at the cell midpoint
+// x_n = x_fwd − (n + ½)Δx [m from AP], from the bow (n = 0) to the stern (n = sections − 1), or with
+// StationLayout::kCellFaces at the cell faces x_n = x_fwd − nΔx, n = 0 .. sections (bow and transom
+// included), where x_fwd and x_aft are the extreme stations of all bodies of the hull (also when only one
+// body is panelled). Each body's
 // section at x_n (hull::InterpolateStation) is cut at the design draught (hull::WettedContour), shifted to z
 // = 0 at the waterline and panelled (PanelSymmetricSection) at its centreline; mirror pairs (y_centre > 0)
 // get one panelled section each side.
@@ -20,6 +22,7 @@ struct StripGeometryOptions {
   /// Bodies to include: -1 all bodies (multihull hulls share the strips and interact), otherwise only the
   /// body of that index, without its mirror (one demihull alone).
   int body = -1;
+  StationLayout layout = kDefaultStationLayout;  ///< kCellFaces needs sections >= 3
   bool IsValid(std::string* error) const;
 };
 

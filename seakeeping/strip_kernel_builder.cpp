@@ -17,6 +17,7 @@ StripKernel BuildStripKernel(const StripOperators& ops, const std::vector<double
   K.speed_m_s = K.dx_m / K.dt_s;
   K.rho_kg_m3 = ops.Rho();
   K.g_m_s2 = ops.G();
+  K.layout = ops.Layout();
   K.x_m = x_m;
   K.panels.resize(N);
   for (int n = 0; n < N; ++n) K.panels[n] = ops.FullPanelsAt(n);
@@ -41,7 +42,8 @@ StripKernel BuildStripKernel(const StripOperators& ops, const std::vector<double
       if (Pn > 0) j.noalias() += ops.MomentumCurrent(n) * S[n];
       J[n] = j;
       auto at = [&](int k) { return k >= m ? J[k] : Eigen::RowVectorXd(Eigen::RowVectorXd::Zero(Pm)); };
-      const Eigen::RowVectorXd f = (3.0 * J[n] - 4.0 * at(n - 1) + at(n - 2)) / (2.0 * ops.Dt());
+      const auto c = ops.ForceStencil(n);
+      const Eigen::RowVectorXd f = (c[0] * J[n] + c[1] * at(n - 1) + c[2] * at(n - 2)) / (2.0 * ops.Dt());
       if (!ops.MirrorReduced()) {
         K.force[n][m] = f;
         continue;

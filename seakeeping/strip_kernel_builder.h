@@ -5,8 +5,9 @@
 // The P_n × P_m source responses S_{n,m} = ∂σ_n/∂V_m follow from the marching equations,
 //   S_{m,m} = System(m)⁻¹,   S_{n,m} = System(n)⁻¹ Σ_{k=m}^{n−1} Memory(n, k) S_{k,m},
 // the momentum responses J_{n,m} = MomentumCurrent(n) S_{n,m} + Σ_{k=m}^{n−1} MomentumMemory(n, k) S_{k,m},
-// and force[n][m] = (3 J_{n,m} − 4 J_{n−1,m} + J_{n−2,m}) / (2 dt) (J_{n',m} = 0 for n' < m), exactly the
-// force of StripMarcher for any inputs. Cost O(N³ P³ / 6).
+// and force[n][m] = (3 J_{n,m} − 4 J_{n−1,m} + J_{n−2,m}) / (2 dt) (J_{n',m} = 0 for n' < m; end rows of
+// their own for StationLayout::kCellFaces, StripOperators::ForceStencil), exactly the force of StripMarcher
+// for any inputs. Cost O(N³ P³ / 6).
 #include <vector>
 
 #include "seakeeping/panel.h"

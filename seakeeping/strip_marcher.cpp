@@ -36,7 +36,8 @@ StripMarcher::Pending StripMarcher::Compute(const Eigen::VectorXd& v) const {
   p.sigma = ops_.Solve(n, v + history_rhs_);
   p.momentum = history_momentum_ + (p.sigma.size() ? ops_.MomentumCurrent(n).dot(p.sigma) : 0.0);
   auto at = [&](int k) { return k >= 0 ? momentum_[k] : 0.0; };
-  p.force = (3.0 * p.momentum - 4.0 * at(n - 1) + at(n - 2)) / (2.0 * ops_.Dt());
+  const auto c = ops_.ForceStencil(n);
+  p.force = (c[0] * p.momentum + c[1] * at(n - 1) + c[2] * at(n - 2)) / (2.0 * ops_.Dt());
   return p;
 }
 

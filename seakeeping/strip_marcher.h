@@ -6,8 +6,9 @@
 // Force. The vertical hydrodynamic force per unit length on the section is taken as the rate of change of the
 // vertical momentum of the strip's disturbance flow,
 //   f_n = dI/dt,   I = ρ ∫_{S(t)} φ n_z dl   (n into the fluid),
-// discretised by the second-order backward difference f_n = (3 I_n − 4 I_{n−1} + I_{n−2}) / (2 dt), with
-// I = 0 before the first step (the water is at rest until the bow enters). For a section that does not
+// discretised by the second-order backward difference f_n = (3 I_n − 4 I_{n−1} + I_{n−2}) / (2 dt) (with
+// end rows of their own when the steps are cell faces: StripOperators::ForceStencil), with I = 0 before the
+// first step (the water is at rest until the bow enters). For a section that does not
 // change, this equals the pressure integral −ρ ∫ φ_t n_z dl (n into the body) exactly. For a section that
 // changes shape as the hull passes through the strip the two differ by a boundary-transport term linear in
 // the motion; the momentum form is the one consistent with slender-body theory (it is what yields the −U

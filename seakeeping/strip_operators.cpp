@@ -258,6 +258,10 @@ StripOperators BuildStripOperators(const std::vector<std::vector<Panel>>& panels
   for (int n = 0; n < N; ++n) CheckPanels(panels_per_step[n], n);
   StripOperators ops;
   ops.steps_ = N, ops.dt_ = dt, ops.rho_ = rho, ops.g_ = g, ops.invariant_ = false;
+  ops.layout_ = options.layout;
+  if (ops.layout_ == StationLayout::kCellFaces && N < 4)
+    throw std::invalid_argument("strip operators: stations at the cell faces need >= 4 steps, got " +
+                                std::to_string(N));
   std::vector<MirrorMap> maps;
   ops.reduced_ = options.use_mirror_symmetry && FindMirrorMaps(panels_per_step, &maps);
   ops.reduced_index_.resize(N);

@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "seakeeping/panel.h"
+#include "seakeeping/strip_kernel.h"
 
 namespace hullopt::sk {
 
@@ -33,6 +34,10 @@ struct StripOperatorOptions {
   /// Then PanelsAt(n) is the half set; FullPanelsAt/ReducedIndex/ReducedShare map inputs on all panels to it.
   /// Off by default: the marching path feeds normal velocities for all panels.
   bool use_mirror_symmetry = false;
+  /// Station layout the steps stand for, which sets the force difference (StripForceStencil) of the strip
+  /// marcher and the kernel reduction. Operators of a fixed section (BuildFixedSectionOperators) always use
+  /// plain BDF2.
+  StationLayout layout = kDefaultStationLayout;
   bool IsValid(std::string* error) const;
 };
 
@@ -44,6 +49,9 @@ class StripOperators {
   double G() const { return g_; }
   /// True when built for a section that does not change (then Memory depends on n − k only).
   bool TimeInvariant() const { return invariant_; }
+  StationLayout Layout() const { return layout_; }
+  /// f_n = (c[0] I_n + c[1] I_{n−1} + c[2] I_{n−2}) / (2 dt) (StripForceStencil of the layout).
+  std::array<double, 3> ForceStencil(int n) const { return StripForceStencil(layout_, n, steps_); }
   const std::vector<Panel>& PanelsAt(int n) const { return panels_[invariant_ ? 0 : n]; }
   int PanelCount(int n) const { return static_cast<int>(PanelsAt(n).size()); }
   /// True when built on the mirror-symmetric half (StripOperatorOptions::use_mirror_symmetry).
@@ -80,6 +88,7 @@ class StripOperators {
   int steps_ = 0;
   double dt_ = 0, rho_ = 0, g_ = 0;
   bool invariant_ = false;
+  StationLayout layout_ = StationLayout::kCellMidpoints;
   bool has_start_ = true;  // time-invariant: memory of the first half interval available
   bool reduced_ = false;    // mirror-symmetric half (general operators only)
   std::vector<std::vector<Panel>> panels_, full_panels_;

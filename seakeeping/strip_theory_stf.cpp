@@ -102,9 +102,14 @@ RaoTable SolveStripTheoryRaos(const HeadSeaShipModel& model, const std::vector<d
     const std::complex<double> scale = 1.0 / std::complex<double>(0.0, we * model.dt());  // 1/(iω_e Δt)
     PeriodicStripForce strip;
     strip.first_step = [](int n) { return n > 0 ? n - 1 : 0; };
-    strip.dot = [&r, scale](int n, int m, const Eigen::VectorXd& v, double) -> std::complex<double> {
+    // With end faces of half weight (kCellFaces) their rows are doubled so that the hull sum still
+    // telescopes.
+    const auto& st = model.stations();
+    const double dx = model.dx();
+    strip.dot = [&r, &st, dx, scale](int n, int m, const Eigen::VectorXd& v, double) -> std::complex<double> {
       const std::complex<double> d = r[m] * v.cast<std::complex<double>>();
-      return m == n ? scale * d : -scale * d;
+      const std::complex<double> s = st[n].weight_m == dx ? scale : scale * (dx / st[n].weight_m);
+      return m == n ? s * d : -s * d;
     };
     const auto x = SolvePeriodicFrequency(model, w, strip);
     out.omega_e_rad_s[f] = we;

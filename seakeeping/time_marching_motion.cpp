@@ -128,8 +128,8 @@ void TimeMarcher::Step() {
     double F3 = 0.0, F5 = 0.0;
     for (int n = 0; n < N; ++n) {
       const double f = kernel_force_[n] + section_force[n];
-      F3 += f * model_.dx();
-      F5 -= st[n].x_cg_m * f * model_.dx();
+      F3 += f * st[n].weight_m;
+      F5 -= st[n].x_cg_m * f * st[n].weight_m;
     }
     const double a_hydro[2] = {F3 / model_.mass(), F5 / model_.pitch_inertia()};
     bool settled = true;

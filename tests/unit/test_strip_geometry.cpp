@@ -35,6 +35,7 @@ TEST_CASE("strip geometry of a catamaran box: stations, panels and waterplane", 
   sk::StripGeometryOptions o;
   o.sections = 20;
   o.panels = 10;
+  o.layout = sk::StationLayout::kCellMidpoints;
   const auto k = sk::StripKernelGeometry(h, o, 5.0, 1025.0, 9.81);
   REQUIRE(k.Steps() == 20);
   CHECK(k.dx_m == Approx(0.5));
@@ -56,6 +57,60 @@ TEST_CASE("strip geometry of a catamaran box: stations, panels and waterplane", 
   o.body = 0;
   const auto k1 = sk::StripKernelGeometry(h, o, 5.0, 1025.0, 9.81);
   CHECK(k1.panels[3].size() == 10u);
+}
+
+TEST_CASE("strip geometry at the cell faces: stations, weights and waterplane", "[strip_geometry]") {
+  const double L = 10, B = 1, T = 0.5;
+  hull::HullForm h;
+  h.type = "monohull";
+  h.draught_m = T;
+  h.length_m = L;
+  h.bodies.push_back(BoxBody(L, B, T, 0.0, 1.0));
+  sk::StripGeometryOptions o;
+  o.sections = 20;
+  o.panels = 10;
+  o.layout = sk::StationLayout::kCellFaces;
+  const auto k = sk::StripKernelGeometry(h, o, 5.0, 1025.0, 9.81);
+  REQUIRE(k.Steps() == 21);
+  CHECK(k.x_m.front() == L);   // bow face
+  CHECK(k.x_m.back() == 0.0);  // transom face, the hull's own end station
+  CHECK(k.Weight(0) == Approx(0.25));
+  CHECK(k.Weight(10) == Approx(0.5));
+  CHECK(k.Weight(20) == Approx(0.25));
+  const hull::MassProperties mass{1025.0 * L * B * T, L / 2, L / 4, 0.0};
+  const sk::HeadSeaShipModel model(k, mass, sk::MotionOptions{});
+  double awp = 0.0;
+  for (const auto& s : model.stations()) awp += s.beam_m * s.weight_m;
+  CHECK(awp == Approx(hull::ComputeHydrostatics(h, 1025.0).awp_m2).epsilon(1e-12));
+  o.sections = 2;
+  CHECK_THROWS_WITH(sk::StripKernelGeometry(h, o, 5.0, 1025.0, 9.81), Catch::Contains("sections = 2"));
+}
+
+TEST_CASE("face-layout force stencil: the hull sum telescopes to the transom and is second order",
+          "[strip_geometry][stencil]") {
+  // For every momentum I_k of a strip, the weighted columns of the force rows w_n c_{n,k} (f_n = Σ c I / 2dt)
+  // must give: Σ_n = 2·δ_{k,last} (momentum leaves only at the transom), Σ_n (n − k) = −2 q_k with q a
+  // quadrature of ∫I dx in units of dx whose sum is the hull length, and Σ_n (n − k)² = 0 away from the
+  // ends. Exact rational arithmetic in doubles: tolerance at round-off.
+  constexpr double kExact = 1e-12;
+  for (int sections : {3, 4, 7, 40}) {
+    const int S = sk::StationCount(sk::StationLayout::kCellFaces, sections);
+    double q_sum = 0.0;
+    for (int k = 0; k < S; ++k) {
+      double m0 = 0, m1 = 0, m2 = 0;
+      for (int n = k; n < S && n <= k + 2; ++n) {
+        const double wc = sk::StationWeight(sk::StationLayout::kCellFaces, n, S, 1.0) *
+                          sk::StripForceStencil(sk::StationLayout::kCellFaces, n, S)[n - k];
+        m0 += wc, m1 += wc * (n - k), m2 += wc * (n - k) * (n - k);
+      }
+      INFO("sections " << sections << " column " << k);
+      CHECK(std::fabs(m0 - (k == S - 1 ? 2.0 : 0.0)) < kExact);
+      q_sum += -0.5 * m1;
+      if (k == 0) CHECK(std::fabs(-0.5 * m1 - 0.5) < kExact);  // trapezoid weight at the bow face
+      if (k < S - 2) CHECK(std::fabs(m2) < kExact);
+    }
+    CHECK(std::fabs(q_sum - sections) < kExact);
+  }
 }
 
 TEST_CASE("zero kernel on a real geometry: static limit", "[strip_geometry][limits]") {

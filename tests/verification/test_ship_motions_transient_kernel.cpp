@@ -82,12 +82,15 @@ void CompareAgainstPeriodic(const sk::RaoTable& periodic, const sk::RaoTable& ot
   }
 }
 
-void CheckPaths(const Case& c) {
+void CheckPaths(const Case& c, sk::StationLayout layout = sk::kDefaultStationLayout) {
   sk::StripGeometryOptions geo;
   geo.sections = 20;
   geo.panels = 8;
+  geo.layout = layout;
   sk::StripKernel kernel = sk::StripKernelGeometry(c.form, geo, c.speed, c.rho, c.g);
-  const auto ops = sk::BuildStripOperators(kernel.panels, kernel.dt_s, c.rho, c.g);
+  sk::StripOperatorOptions ops_options;
+  ops_options.layout = layout;
+  const auto ops = sk::BuildStripOperators(kernel.panels, kernel.dt_s, c.rho, c.g, ops_options);
   sk::TransientGreenKernelBuilder()(&kernel);
   sk::MotionOptions mo;
   mo.damping_cs = c.cs;
@@ -135,4 +138,10 @@ TEST_CASE("transient kernel: paths agree, Delft 372 Fn 0.75", "[motions][transie
 
 TEST_CASE("transient kernel: paths agree, NPL 5b-like catamaran Fr 0.8", "[motions][transient][npl5b]") {
   CheckPaths(Npl5b());
+}
+
+// Strip steps at the cell faces (exact transom momentum): the same agreement, marcher and kernel with the
+// layout's own end rows.
+TEST_CASE("transient kernel: paths agree, Delft 372 Fn 0.75, cell faces", "[motions][transient][delft372]") {
+  CheckPaths(Delft372(), sk::StationLayout::kCellFaces);
 }
