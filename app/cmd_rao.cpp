@@ -40,6 +40,7 @@ void RunRao(const std::string& config_file, const std::string& out_dir) {
     sk::StripGeometryOptions geo;
     geo.sections = sc.sections;
     geo.panels = sc.panels;
+    geo.layout = sc.Layout();
     sk::StripKernelGeometry(hull, geo, 1.0, water.rho_kg_m3, water.g_m_s2);
     hs = hull::ComputeHydrostatics(hull, water.rho_kg_m3);
   } catch (const std::exception& e) {
@@ -56,6 +57,7 @@ void RunRao(const std::string& config_file, const std::string& out_dir) {
   o.sections = sc.sections;
   o.panels = sc.panels;
   o.interaction = sc.interaction;
+  o.layout = sc.Layout();
   o.method = sc.method == "strip_theory_stf" ? sk::RaoSolverOptions::Method::kStripTheory
                                              : sk::RaoSolverOptions::Method::kTimeDomainStrip;
   o.path = sc.path == "periodic" ? sk::RaoSolverOptions::Path::kPeriodic

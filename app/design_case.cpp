@@ -16,6 +16,7 @@ sk::RaoSolverOptions SolverOptions(const DesignCase& d, double cs) {
   o.sections = d.solver.sections;
   o.panels = d.solver.panels;
   o.interaction = d.solver.interaction;
+  o.layout = d.solver.Layout();
   o.path = d.solver.path == "periodic" ? sk::RaoSolverOptions::Path::kPeriodic
                                        : sk::RaoSolverOptions::Path::kTimeMarching;
   o.motion.damping_cs = cs;

@@ -59,6 +59,9 @@ SolverConfig ParseSolverConfig(YamlMap& s, bool frequencies_required) {
     s.Fail("hydrodynamic_fraction", "must satisfy 0 < fraction <= 1 (the paper uses 0.2 to 0.4)");
   c.path = s.Choice("path", {"periodic", "time_marching"}, c.path);
   c.interaction = s.Boolean("interaction", c.interaction);
+  c.stations = s.Choice("stations", {"cell_faces", "cell_midpoints"}, c.stations);
+  if (c.stations == "cell_faces" && c.sections < 3)
+    s.Fail("sections", "must be >= 3 with stations: cell_faces");
   if (frequencies_required || s.Has("frequencies")) {
     auto f = s.Map("frequencies");
     c.frequencies = ParseFrequencies(f);

@@ -10,6 +10,7 @@
 //   hydrodynamic_fraction: 0.2       # time marching: weight of the hydrodynamic acceleration (0 < w <= 1)
 //   path: periodic                   # | time_marching
 //   interaction: true                # multihull bodies share the strips (false: one demihull alone)
+//   stations: cell_faces             # | cell_midpoints: where the strip steps sit (docs/ship-motions.md)
 //   frequencies: { lambda_over_L: [0.6, 0.8, 1.0] }   # or omega_rad_s / omega_e_rad_s lists, or
 //                { range: { quantity: omega_e_rad_s, from: 2.0, to: 12.0, count: 60 } }
 // mass:                              # defaults from the hull's hydrostatics
@@ -23,6 +24,7 @@
 #include "parametric_hull/hull_form.h"
 #include "parametric_hull/hydrostatics.h"
 #include "seakeeping/frequency_list.h"
+#include "seakeeping/strip_kernel.h"
 
 namespace hullopt::io {
 
@@ -34,7 +36,12 @@ struct SolverConfig {
   double hydrodynamic_fraction = 0.2;  ///< [-]
   std::string path = "periodic";       ///< periodic | time_marching
   bool interaction = true;
+  /// Strip steps at the cell faces (bow and transom sections included; the default) or the cell midpoints.
+  std::string stations = "cell_faces";
   sk::FrequencySpec frequencies;
+  sk::StationLayout Layout() const {
+    return stations == "cell_midpoints" ? sk::StationLayout::kCellMidpoints : sk::StationLayout::kCellFaces;
+  }
 };
 
 /// Reads and validates `solver` (consumes its keys; call solver.Finish() afterwards or let this do it).

@@ -60,6 +60,9 @@ TEST_CASE("bad solver and mass input: one clear error each", "[config][errors]")
   CHECK_THROWS_WITH(bad("path: sideways\nfrequencies: { omega_rad_s: [1.0] }\n"),
                     Catch::Contains("solver.path"));
   CHECK_THROWS_WITH(bad("frequencies: { omega_rad_s: [1.0] }\nCss: 1\n"), Catch::Contains("Css"));
+  CHECK_THROWS_WITH(bad("stations: ends\nfrequencies: { omega_rad_s: [1.0] }\n"), Catch::Contains("solver.stations"));
+  CHECK_THROWS_WITH(bad("sections: 2\nfrequencies: { omega_rad_s: [1.0] }\n"),
+                    Catch::Contains("stations: cell_faces"));
   CHECK_THROWS_AS(bad("Cs: 0.1\n"), InputError);  // frequencies are required
 
   auto mass = [](const std::string& text) {

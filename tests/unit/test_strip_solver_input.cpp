@@ -39,7 +39,7 @@ TEST_CASE("bad panels, time steps and frequencies are refused", "[td][input]") {
   CHECK_THROWS_AS(BuildFixedSectionOperators(good, 0, 0.05, 1025, 9.81), std::invalid_argument);
   CHECK_THROWS_AS(TimeDomainHeaveCoefficients(good, {}, 1025, 9.81), std::invalid_argument);
   CHECK_THROWS_AS(TimeDomainHeaveCoefficients(good, {-1.0}, 1025, 9.81), std::invalid_argument);
-  const auto ops = BuildStripOperators({good}, 0.05, 1025, 9.81);
+  const auto ops = BuildStripOperators({good, good, good, good}, 0.05, 1025, 9.81);  // >= 4 steps (cell faces)
   CHECK_THROWS_AS(BuildStripKernel(ops, {1.0, 2.0}), std::invalid_argument);
 }
 

@@ -47,7 +47,11 @@ TEST_CASE("Delft 372: time marching agrees with the periodic steady state", "[mo
   const auto w = sk::WaveFrequencies(
       sk::FrequencySpec::Range(sk::FrequencySpec::Quantity::kOmegaE, 0.3 * peak_we, 3.0 * peak_we, 13),
       kSpeed, kG, 3.0);
-  const auto periodic = sk::SolvePeriodicRaos(model, w);
+  // Against the exact steady state of the marching scheme (trapezoid kinematics, ARCHITECTURE §5), as in
+  // test_ship_motions_transient_kernel.cpp: the continuous-time kinematics differ from marching by the
+  // trapezoid frequency warp (ω_e Δt)²/12, which on this stand-in kernel's sharp resonance reaches 1.4% of
+  // the pitch peak with cell-face stations and is not a disagreement between the paths.
+  const auto periodic = sk::SolvePeriodicRaos(model, w, sk::PeriodicKinematics::kTrapezoid);
   sk::KernelStripForceModel forces(kernel);
   const auto marched = sk::SolveMarchingRaos(model, forces, w, sk::MarchingOptions{});
   double peak3 = 0, peak5 = 0;
