@@ -156,8 +156,19 @@ SectionHydrodynamics SolveSectionFrequencyDomain(const std::vector<std::vector<P
   const int nb = static_cast<int>(body.size()), nl = static_cast<int>(lid.size()), n = nb + nl;
   auto source = [&](int j) -> const Panel& { return j < nb ? body[j] : lid[j - nb]; };
 
-  // Influence matrices: normal velocity at body midpoints, potential at body and lid midpoints.
-  Eigen::MatrixXcd A(n, n);          // system: body rows ∂φ/∂n, lid rows φ
+  // Influence matrices: normal velocity at body midpoints, potential at body midpoints, and the lid condition
+  // at lid midpoints. On z = 0 every source panel's potential satisfies φ_z = νφ (the Green function's
+  // free-surface condition) except for the lid sheet's own jump: just below the lid (inside the body)
+  // ∂φ/∂z = νφ − σ. The lid rows impose ∂φ/∂z + νφ = 0 there, i.e. 2νφ − σ = 0: the free-surface condition
+  // with the opposite sign. Without a lid the interior problem (φ = 0 on the body, φ_z − νφ = 0 on the lid)
+  // has the irregular frequencies as eigenvalues; with φ_z + νφ = 0 it has none (∫|∇φ|² = −ν∫_lid |φ|² forces
+  // φ ≡ 0, so all sources vanish). The condition is local Neumann at the waterline corners, where it is
+  // compatible with any body potential, and tends to φ = 0 at high frequency, where the body potential at the
+  // waterline vanishes too: the source densities stay bounded. A Dirichlet lid (φ = 0 at all frequencies)
+  // conflicts with the body potential at the corners (φ jumps from φ(waterline) to 0): the densities grow
+  // like 1/r there, which constant panels cannot represent, and the result drifts with the lid panelling
+  // (0.21 ρA for a 14-panel semicircle, 4 → 56 lid panels; docs/theory.md).
+  Eigen::MatrixXcd A(n, n);          // system: body rows ∂φ/∂n, lid rows ∂φ/∂z + νφ from below
   Eigen::MatrixXcd Phi_body(nb, n);  // potential at body midpoints
   for (int i = 0; i < n; ++i) {
     const bool on_body = i < nb;
@@ -170,7 +181,7 @@ SectionHydrodynamics SolveSectionFrequencyDomain(const std::vector<std::vector<P
         A(i, j) = inf.vy * nrm[0] + inf.vz * nrm[1];
         Phi_body(i, j) = inf.phi;
       } else {
-        A(i, j) = inf.phi;
+        A(i, j) = 2.0 * nu * inf.phi - (j == i ? 1.0 : 0.0);
       }
     }
   }
