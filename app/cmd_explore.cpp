@@ -7,6 +7,10 @@
 #include <memory>
 #include <nlohmann/json.hpp>
 
+#ifdef _OPENMP
+#include <omp.h>
+#endif
+
 #include "app/campaign_journal.h"
 #include "app/campaign_setup.h"
 #include "app/commands.h"
@@ -38,6 +42,11 @@ void RunExplore(const ExploreCliOptions& o) {
   const opt::CampaignDefinition& def = lc.config.definition;
   opt::Evaluator& evaluator = *lc.evaluator;
   const int threads = ResolveThreads(o.threads);
+#ifdef _OPENMP
+  // Also the physics inside one evaluation (used when samples run one at a time; inside the parallel sample
+  // loop nested regions run on one thread), so --threads 1 is one core, as in optimize.
+  omp_set_num_threads(threads);
+#endif
   const int rank = MpiRank(), size = MpiSize();
   const int n = lc.config.explore.samples;
 
