@@ -17,6 +17,8 @@ sk::RaoSolverOptions SolverOptions(const DesignCase& d, double cs) {
   o.panels = d.solver.panels;
   o.interaction = d.solver.interaction;
   o.layout = d.solver.Layout();
+  o.method = d.solver.method == "strip_theory_stf" ? sk::RaoSolverOptions::Method::kStripTheory
+                                                   : sk::RaoSolverOptions::Method::kTimeDomainStrip;
   o.path = d.solver.path == "periodic" ? sk::RaoSolverOptions::Path::kPeriodic
                                        : sk::RaoSolverOptions::Path::kTimeMarching;
   o.motion.damping_cs = cs;
@@ -80,6 +82,10 @@ DesignCase LoadDesignCase(io::YamlMap& root, const std::string& config_file, con
 }
 
 sk::StripKernel BuildDesignKernel(const DesignCase& d) {
+  if (d.solver.method != "time_domain_strip")
+    throw io::InputError("design '" + d.name + "': solver.method = " + d.solver.method +
+                         ": only the time-domain strip method has a frequency-independent strip kernel "
+                         "(needed here); use method: time_domain_strip");
   return Guard(d, [&] {
     return sk::BuildHullStripKernel(d.hull, SolverOptions(d, d.solver.cs), d.speed_m_s, d.water.rho_kg_m3,
                                     d.water.g_m_s2, sk::TransientGreenKernelBuilder());

@@ -39,13 +39,15 @@ struct DesignCase {
 DesignCase LoadDesignCase(io::YamlMap& root, const std::string& config_file, const std::string& name,
                           bool read_speed = true);
 
-/// RAOs of the design at wave frequencies omega_rad_s (increasing, > 0), with the transient Green-function
-/// strip kernel. Cs overrides the config's when >= 0. Throws io::InputError naming the design for a hull that
+/// RAOs of the design at wave frequencies omega_rad_s (increasing, > 0) by the config's solver.method: the
+/// time-domain strip method (transient Green-function kernel) or conventional strip theory. Cs overrides the
+/// config's when >= 0. Throws io::InputError naming the design for a hull that
 /// cannot be solved or non-finite results.
 sk::RaoTable ComputeDesignRaos(const DesignCase& design, const std::vector<double>& omega_rad_s,
                                double cs_override = -1.0);
 
-/// The strip kernel of the design (frequency- and Cs-independent; compute once, reuse for many Cs).
+/// The strip kernel of the design (frequency- and Cs-independent; compute once, reuse for many Cs). Time-domain
+/// strip method only: io::InputError for solver.method strip_theory_stf.
 sk::StripKernel BuildDesignKernel(const DesignCase& design);
 /// RAOs from a prebuilt kernel (periodic path) for a given Cs.
 sk::RaoTable DesignRaosFromKernel(const DesignCase& design, const sk::StripKernel& kernel,
