@@ -1,6 +1,7 @@
 // hullopt rao CONFIG --out DIR: heave and pitch RAOs of one hull at one speed in head seas → rao.csv,
 // rao.svg.
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <sstream>
 
@@ -74,13 +75,16 @@ void RunRao(const std::string& config_file, const std::string& out_dir) {
   } catch (const std::invalid_argument& e) {
     throw io::InputError(std::string("cannot compute RAOs: ") + e.what());
   }
+  for (const auto& w : t.warnings) std::fprintf(stderr, "hullopt: warning: hull '%s': %s\n", hull_name.c_str(), w.c_str());
   PrepareOutputDir(out_dir, "rao", config_file, root.resolved());
   std::ostringstream fn;
   fn << "speed U = " << U << " m/s (Fn " << U / std::sqrt(water.g_m_s2 * hs.L_m) << "), method " << sc.method
      << ", kernel " << kernel_kind << ", path " << sc.path << ", " << sc.sections << " sections x "
      << sc.panels << " panels, Cs = " << sc.cs << (sc.interaction ? "" : ", bodies without interaction");
   try {
-    io::WriteRaoCsv(OutPath(out_dir, "rao.csv"), t, hs.L_m, {"hull: " + hull_name, fn.str()});
+    std::vector<std::string> header = {"hull: " + hull_name, fn.str()};
+    for (const auto& w : t.warnings) header.push_back("warning: " + w);
+    io::WriteRaoCsv(OutPath(out_dir, "rao.csv"), t, hs.L_m, header);
   } catch (const std::domain_error& e) {
     throw io::InputError(std::string("hull '") + hull_name + "': " + e.what());
   }

@@ -96,7 +96,9 @@ sk::RaoTable DesignRaosFromKernel(const DesignCase& d, const sk::StripKernel& ke
                                   const std::vector<double>& omega_rad_s, double cs) {
   return Guard(d, [&] {
     const sk::HeadSeaShipModel model(kernel, d.mass, SolverOptions(d, cs).motion);
-    return sk::SolvePeriodicRaos(model, omega_rad_s);
+    sk::RaoTable t = sk::SolvePeriodicRaos(model, omega_rad_s);
+    t.warnings = sk::StripKernelWarnings(kernel);
+    return t;
   });
 }
 

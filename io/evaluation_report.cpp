@@ -68,6 +68,7 @@ std::vector<std::string> EvaluationWarnings(const std::vector<EvaluatedDesign>& 
                                             const EvaluationReportOptions& report) {
   std::vector<std::string> w;
   for (const auto& d : designs) {
+    for (const auto& r : d.rao.warnings) w.push_back("design '" + d.name + "': " + r);
     for (const auto& s : d.evaluation.seas) {
       if (s.truncated_wave_energy_fraction > report.truncation_warning_fraction) {
         char buf[320];

@@ -15,6 +15,7 @@ StripKernelBuilder TransientGreenKernelBuilder() {
     o.layout = k->layout;
     StripKernel built = BuildStripKernelMirrorReduced(k->panels, k->x_m, k->dt_s, k->rho_kg_m3, k->g_m_s2, o);
     k->force = std::move(built.force);
+    k->system_condition = std::move(built.system_condition);
   };
 }
 
@@ -71,9 +72,15 @@ RaoTable ComputeRaos(const hull::HullForm& hull, const hull::MassProperties& mas
   }
   const StripKernel kernel = BuildHullStripKernel(hull, options, speed_m_s, rho_kg_m3, g_m_s2, builder);
   const HeadSeaShipModel model(kernel, mass, options.motion);
-  if (options.path == RaoSolverOptions::Path::kPeriodic) return SolvePeriodicRaos(model, omega_rad_s);
-  KernelStripForceModel forces(kernel);
-  return SolveMarchingRaos(model, forces, omega_rad_s, options.marching);
+  RaoTable t;
+  if (options.path == RaoSolverOptions::Path::kPeriodic) {
+    t = SolvePeriodicRaos(model, omega_rad_s);
+  } else {
+    KernelStripForceModel forces(kernel);
+    t = SolveMarchingRaos(model, forces, omega_rad_s, options.marching);
+  }
+  t.warnings = StripKernelWarnings(kernel);
+  return t;
 }
 
 }  // namespace hullopt::sk

@@ -42,7 +42,7 @@ StripKernel BuildHullStripKernel(const hull::HullForm& hull, const RaoSolverOpti
                                  double speed_m_s, double rho_kg_m3, double g_m_s2,
                                  const StripKernelBuilder& builder);
 
-/// RAOs at the wave frequencies omega_rad_s (increasing, > 0). Throws std::invalid_argument for bad options,
+/// RAOs at the wave frequencies omega_rad_s (increasing, > 0), with StripKernelWarnings in `warnings`. Throws std::invalid_argument for bad options,
 /// speed or frequencies, std::domain_error for a hull that cannot be solved or non-finite results (naming the
 /// hull and frequency).
 RaoTable ComputeRaos(const hull::HullForm& hull, const hull::MassProperties& mass, double speed_m_s,

@@ -7,6 +7,7 @@
 // heave = X3 / A [m/m], pitch = X5 / (k A) [rad/rad], k = ω²/g; phase = arg, lead positive, relative to the wave
 // crest at the CG. Vertical displacement at x forward of the CG: s = x3 − x·x5.
 #include <complex>
+#include <string>
 #include <vector>
 
 namespace hullopt::sk {
@@ -18,6 +19,8 @@ struct RaoTable {
   std::vector<double> omega_e_rad_s;         ///< [rad/s] encounter frequency ω_e = ω + ω²U/g
   std::vector<std::complex<double>> heave;   ///< X3/A [m/m]
   std::vector<std::complex<double>> pitch;   ///< X5/(kA) [-]
+  /// Numerical warnings of the solve (rule and numbers), e.g. near-singular strip sections; empty when none.
+  std::vector<std::string> warnings;
 };
 
 }  // namespace hullopt::sk

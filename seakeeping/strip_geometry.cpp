@@ -136,6 +136,13 @@ StripKernel CombineIndependentKernels(const std::vector<StripKernel>& parts) {
     }
     for (int n = 0; n < N; ++n)
       out.panels[n].insert(out.panels[n].end(), q.panels[n].begin(), q.panels[n].end());
+    // Independent systems: the worse of the two per step.
+    if (out.system_condition.size() == static_cast<std::size_t>(N) &&
+        q.system_condition.size() == static_cast<std::size_t>(N)) {
+      for (int n = 0; n < N; ++n) out.system_condition[n] = std::max(out.system_condition[n], q.system_condition[n]);
+    } else {
+      out.system_condition.clear();
+    }
   }
   return out;
 }

@@ -15,6 +15,7 @@
 // incident-wave velocity) · n. force[n][m] is a row vector over the panels of step m [N/m per m/s].
 #include <Eigen/Dense>
 #include <array>
+#include <string>
 #include <vector>
 
 #include "seakeeping/panel.h"
@@ -64,6 +65,14 @@ inline std::array<double, 3> StripForceStencil(StationLayout layout, int n, int 
   return {3.0, -4.0, 1.0};
 }
 
+/// A strip step whose 2D system is worse conditioned than this is reported (StripKernelWarnings). Measured
+/// (L1 estimate, largest step of the hull): 2.7–11 for the Table 1 catamarans and monohulls and Delft 372 at
+/// 40 × 14, up to 55 at 160 × 14 where the bow stations become tiny; on the generator's SWATH SW2, whose bow
+/// bulb flattens into a plate thinner than its panels are long, 314–1730 at 14–28 panels, with heave and pitch
+/// damping that changed sign from one resolution to the next (docs/study-14-hulls.md). 200 lies between, with a
+/// factor 3.6 above the well-posed cases; 150–300 (SW2 with 20–24 panels) is a grey zone.
+inline constexpr double kIllConditionedStrip = 200.0;
+
 struct StripKernel {
   double speed_m_s = 0.0;  ///< [m/s] ship speed U
   double dx_m = 0.0;       ///< [m] strip advance per step (section spacing)
@@ -74,9 +83,16 @@ struct StripKernel {
   std::vector<double> x_m;                                  ///< [m] station from AP held at step n
   std::vector<std::vector<Panel>> panels;                   ///< panels (all bodies in the strip) at step n
   std::vector<std::vector<Eigen::RowVectorXd>> force;       ///< force[n][m], m = 0..n [N/m per m/s]
+  /// Per step: the condition-number estimate of its 2D system (StripOperators::ConditionEstimate); empty when
+  /// the builder has none (impulsive stand-in). Large values flag sections the panels cannot resolve.
+  std::vector<double> system_condition;
   int Steps() const { return static_cast<int>(x_m.size()); }
   /// [m] weight of step n in the hull sums F3 = Σ weight_n f_n (dx, or dx/2 at the end faces).
   double Weight(int n) const { return StationWeight(layout, n, Steps(), dx_m); }
 };
+
+/// One message (rule and numbers) if any step's system_condition exceeds `limit`: the worst step's station
+/// and value, how many steps exceed it, and the usual remedy. Empty otherwise.
+std::vector<std::string> StripKernelWarnings(const StripKernel& kernel, double limit = kIllConditionedStrip);
 
 }  // namespace hullopt::sk

@@ -23,6 +23,7 @@ StripKernel BuildStripKernel(const StripOperators& ops, const std::vector<double
   for (int n = 0; n < N; ++n) K.panels[n] = ops.FullPanelsAt(n);
   K.force.resize(N);
   for (int n = 0; n < N; ++n) K.force[n].resize(n + 1);
+  for (int n = 0; n < N; ++n) K.system_condition.push_back(ops.PanelCount(n) > 0 ? ops.ConditionEstimate(n) : 1.0);
   // Column by column (input step m): propagate the source responses forward in n.
   for (int m = 0; m < N; ++m) {
     const int Pm = ops.PanelCount(m);

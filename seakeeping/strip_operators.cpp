@@ -1,5 +1,6 @@
 #include "seakeeping/strip_operators.h"
 
+#include <limits>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -208,6 +209,13 @@ bool StripOperatorOptions::IsValid(std::string* error) const {
 
 const Eigen::MatrixXd& StripOperators::System(int n) const {
   return system_[invariant_ ? (n == 0 ? 0 : 1) : n];
+}
+
+double StripOperators::ConditionEstimate(int n) const {
+  const auto& lu = lu_[invariant_ ? (n == 0 ? 0 : 1) : n];
+  if (lu.rows() == 0) return 1.0;
+  const double r = lu.rcond();
+  return r > 0.0 ? 1.0 / r : std::numeric_limits<double>::infinity();
 }
 
 Eigen::MatrixXd StripOperators::Solve(int n, const Eigen::MatrixXd& rhs) const {

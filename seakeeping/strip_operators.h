@@ -69,6 +69,9 @@ class StripOperators {
   const Eigen::MatrixXd& System(int n) const;
   /// Solves System(n) σ = rhs (stored LU).
   Eigen::MatrixXd Solve(int n, const Eigen::MatrixXd& rhs) const;
+  /// Estimate of the L1 condition number of System(n) (Eigen's rcond of the stored LU; 1 for an empty step):
+  /// a few for a well-panelled section, large when the panels cannot resolve it (e.g. a thin plate-like bulb).
+  double ConditionEstimate(int n) const;
   /// Memory normal velocity at the collocation points of step n per unit σ of step k < n [-] (P_n × P_k).
   const Eigen::MatrixXd& Memory(int n, int k) const;
   /// Row vectors of I_n [kg/s per (m/s) of σ = kg/m]: the current sources and the sources of step k < n.
