@@ -29,6 +29,7 @@
 #include <stdexcept>
 
 #include "app/commands.h"
+#include "io/config_path.h"
 #include "app/design_case.h"
 #include "app/output_dir.h"
 #include "io/evaluation_report.h"
@@ -42,15 +43,6 @@ namespace hullopt::app {
 namespace {
 
 constexpr double kKnot = 1852.0 / 3600.0;  // [m/s]
-
-// A data path from the config: as given if it exists (relative to the working folder), else relative to the
-// config file's folder.
-std::string DataPath(const std::string& given, const std::string& config_file) {
-  namespace fs = std::filesystem;
-  if (fs::path(given).is_absolute() || fs::exists(given)) return given;
-  const fs::path beside = fs::path(config_file).parent_path() / given;
-  return fs::exists(beside) ? beside.string() : given;
-}
 
 std::string DefaultName(const std::string& csv) {
   namespace fs = std::filesystem;
@@ -77,7 +69,7 @@ DesignInput ReadDesign(io::YamlMap& m, const std::string& config_file, double g,
   DesignInput in;
   if (!single && m.Has("config")) {
     in.where = m.Where("config");
-    const std::string file = DataPath(m.String("config"), config_file);
+    const std::string file = io::ResolveConfigPath(m.String("config"), config_file);
     m.resolved()["config"] = std::filesystem::absolute(file).lexically_normal().string();
     in.design.name = m.String("name", std::filesystem::path(file).stem().string());
     in.design.group = m.String("group", "");
@@ -93,7 +85,7 @@ DesignInput ReadDesign(io::YamlMap& m, const std::string& config_file, double g,
     return in;
   }
   in.where = m.Where("rao_csv");
-  const std::string csv = DataPath(m.String("rao_csv"), config_file);
+  const std::string csv = io::ResolveConfigPath(m.String("rao_csv"), config_file);
   // Record the file actually read, absolute, so config.resolved.yaml re-runs from any folder.
   m.resolved()["rao_csv"] = std::filesystem::absolute(csv).lexically_normal().string();
   in.design.name = m.String("name", DefaultName(csv));

@@ -1,6 +1,6 @@
 #include "io/calibrate_config.h"
 
-#include <filesystem>
+#include "io/config_path.h"
 
 namespace hullopt::io {
 namespace {
@@ -8,13 +8,7 @@ namespace {
 std::vector<std::string> DataFiles(YamlMap& m) {
   std::vector<std::string> files = m.Strings("data");
   if (files.empty()) m.Fail("data", "must list at least one tank RAO CSV file");
-  const auto config_dir = std::filesystem::path(m.file()).parent_path();
-  for (auto& f : files) {
-    const std::filesystem::path p(f);
-    if (p.is_relative() && !std::filesystem::exists(p) && std::filesystem::exists(config_dir / p)) {
-      f = (config_dir / p).string();
-    }
-  }
+  for (auto& f : files) f = ResolveConfigPath(f, m.file());
   return files;
 }
 

@@ -1,9 +1,9 @@
 #include "io/section_config.h"
 
 #include <cmath>
-#include <filesystem>
 #include <sstream>
 
+#include "io/config_path.h"
 #include "io/offsets_csv.h"
 #include "parametric_hull/section_geometry.h"
 
@@ -20,9 +20,7 @@ double Positive(YamlMap& m, const std::string& key) {
 // the config's folder) at x_m [m from AP], cut at draught_m [m above baseline] and shifted so that the
 // waterline is z = 0, as a half contour keel → waterline.
 sk::HalfContour OffsetsSection(YamlMap& s) {
-  std::string file = s.String("offsets_csv");
-  const std::filesystem::path p(file), dir = std::filesystem::path(s.file()).parent_path();
-  if (p.is_relative() && !std::filesystem::exists(p) && std::filesystem::exists(dir / p)) file = (dir / p).string();
+  const std::string file = ResolveConfigPath(s.String("offsets_csv"), s.file());
   const double x = s.Number("x_m");
   const double T = Positive(s, "draught_m");
   const hull::Demihull body = ReadOffsetsCsv(file, T);

@@ -65,6 +65,7 @@ RaoTable ComputeRaos(const hull::HullForm& hull, const hull::MassProperties& mas
     StripGeometryOptions g;
     g.sections = options.sections;
     g.panels = options.panels;
+    g.layout = options.layout;  // the same strip stations as the time-domain method
     const StripKernel geometry = StripKernelGeometry(hull, g, speed_m_s, rho_kg_m3, g_m_s2);
     const HeadSeaShipModel model(geometry, mass, options.motion);
     return SolveStripTheoryRaos(model, omega_rad_s,

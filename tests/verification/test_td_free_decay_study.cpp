@@ -7,6 +7,8 @@
 //   panels)
 //   ./build/tests/verification_td_free_decay_study "[decay_ringing_N]"  (ringing amplitude vs panels)
 #include <catch2/catch.hpp>
+
+#include "support/release_march.h"
 #include <chrono>
 #include <cmath>
 #include <complex>
@@ -23,29 +25,7 @@
 using namespace hullopt::sk;
 namespace {
 constexpr double kG = 9.81, kRho = 1025.0;
-Eigen::VectorXd Nz(const std::vector<Panel>& p) {
-  Eigen::VectorXd n(p.size());
-  for (std::size_t j = 0; j < p.size(); ++j) n(j) = p[j].Normal()[1];
-  return n;
-}
-std::vector<double> March(const StripOperators& ops, const std::vector<Panel>& panels, double m, double C,
-                          int N, double dt) {
-  StripMarcher marcher(ops);
-  const Eigen::VectorXd nz = Nz(panels);
-  std::vector<double> x(N), v(N);
-  x[0] = 1, v[0] = 0;
-  marcher.Advance(0.0 * nz);
-  for (int n = 1; n < N; ++n) {
-    const double xm1 = x[n - 1], xm2 = n >= 2 ? x[n - 2] : 1.0, vm1 = v[n - 1], vm2 = n >= 2 ? v[n - 2] : 0.0;
-    const double f0 = marcher.Peek(0.0 * nz), f1 = marcher.Peek(nz) - f0;
-    const double lhs = 3 * m / (2 * dt) - f1 + C * 2 * dt / 3;
-    const double rhs = m * (4 * vm1 - vm2) / (2 * dt) + f0 - C * (4 * xm1 - xm2) / 3;
-    v[n] = rhs / lhs;
-    x[n] = (4 * xm1 - xm2 + 2 * dt * v[n]) / 3;
-    marcher.Advance(v[n] * nz);
-  }
-  return x;
-}
+Eigen::VectorXd Nz(const std::vector<Panel>& p) { return hullopt::testing::PanelNz(p); }
 struct M {
   double period, l1, l2, p1, p3;
 };
@@ -59,11 +39,7 @@ M Measure(const std::vector<double>& h, double dt) {
   if (zero.size() < 5 || ext.size() < 4) return {0, 0, 0, 0, 0};
   return {zero[4] - zero[2], std::log(h[0] / ext[1]), std::log(ext[1] / ext[3]), ext[1], ext[3]};
 }
-std::vector<double> Times(int N, double dt) {
-  std::vector<double> t(N);
-  for (int n = 0; n < N; ++n) t[n] = n * dt;
-  return t;
-}
+using hullopt::testing::Times;
 FreeDecayInput FdInput(const std::vector<Panel>& panels, double m, double C, int lid, double dw,
                        double wmax) {
   FrequencyDomainOptions fo;
@@ -118,7 +94,7 @@ TEST_CASE("free decay: panels, time step, lid and Fourier grid", "[.][decay_stud
     const auto panels = PanelSymmetricSection(SemicircleContour(R), np);
     const int N = static_cast<int>(std::lround(T / dt));
     const auto ops = BuildFixedSectionOperators(panels, N, dt, kRho, kG);
-    const auto x = March(ops, panels, m, C, N, dt);
+    const auto x = hullopt::testing::ReleaseHistory(ops, panels, m, C, N);
     const double sec = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     char buf[100];
     std::snprintf(buf, sizeof buf, "TD march %d panels dt %.3f (%.1f s)", np, dt, sec);
@@ -156,7 +132,7 @@ TEST_CASE("free decay: irregular-frequency ringing of the 14-panel release", "[.
   const auto panels = PanelSymmetricSection(SemicircleContour(R), 14);
   const int N = 1500;
   const auto ops = BuildFixedSectionOperators(panels, N, dt, kRho, kG);
-  const auto x = March(ops, panels, m, C, N, dt);
+  const auto x = hullopt::testing::ReleaseHistory(ops, panels, m, C, N);
   const auto pred = FreeDecayFromCoefficients(TdInput(ops, panels, m, C, 0.05, 12.05), Times(N, dt));
   for (double t0 : {4.0, 8.0, 16.0, 24.0}) {
     double mx = 0, mr = 0;
@@ -199,7 +175,7 @@ TEST_CASE("free decay: ringing amplitude against the panel count", "[.][decay_ri
     const auto panels = PanelSymmetricSection(SemicircleContour(R), np);
     const int N = 1000;
     const auto ops = BuildFixedSectionOperators(panels, N, dt, kRho, kG);
-    const auto x = March(ops, panels, m, C, N, dt);
+    const auto x = hullopt::testing::ReleaseHistory(ops, panels, m, C, N);
     double mx = 0;
     for (int n = 14 / dt; n < N; ++n) mx = std::max(mx, std::fabs(x[n]));
     std::complex<double> s = 0;

@@ -4,6 +4,8 @@
 // to a steady state against the steady-state transform, and the free decay of a released floating cylinder.
 #include <algorithm>
 #include <catch2/catch.hpp>
+
+#include "support/release_march.h"
 #include <cmath>
 #include <complex>
 #include <random>
@@ -194,28 +196,9 @@ struct Release {
   double R = 1.0, m = kRho * M_PI / 2, C = 2 * kRho * kG;
 };
 
-// Time-domain release from rest at x0 = 1: d/dt(m v + I) = −C x with the strip's momentum I (all
-// hydrodynamic force on the left, as in the reference paper), BDF2 in time and implicit in v (the force is
-// affine in the current velocity). Returns x/x0 at steps 0..N−1 (ops must hold >= N steps).
 std::vector<double> ReleaseHistory(const StripOperators& ops, const std::vector<Panel>& panels,
                                    const Release& body, int N) {
-  const double dt = ops.Dt(), m = body.m, C = body.C;
-  StripMarcher marcher(ops);
-  const Eigen::VectorXd nz = HeaveNormals(panels);
-  std::vector<double> x(N), v(N);
-  x[0] = 1.0, v[0] = 0;
-  marcher.Advance(0.0 * nz);
-  for (int n = 1; n < N; ++n) {
-    const double xm1 = x[n - 1], xm2 = n >= 2 ? x[n - 2] : 1.0, vm1 = v[n - 1], vm2 = n >= 2 ? v[n - 2] : 0.0;
-    const double f0 = marcher.Peek(0.0 * nz), f1 = marcher.Peek(nz) - f0;  // f_n = f0 + f1 v_n
-    // m (3v − 4v_{n−1} + v_{n−2})/(2dt) = f0 + f1 v − C x,   x = (4x_{n−1} − x_{n−2} + 2dt v)/3
-    const double lhs = 3 * m / (2 * dt) - f1 + C * 2 * dt / 3;
-    const double rhs = m * (4 * vm1 - vm2) / (2 * dt) + f0 - C * (4 * xm1 - xm2) / 3;
-    v[n] = rhs / lhs;
-    x[n] = (4 * xm1 - xm2 + 2 * dt * v[n]) / 3;
-    marcher.Advance(v[n] * nz);
-  }
-  return x;
+  return hullopt::testing::ReleaseHistory(ops, panels, body.m, body.C, N);
 }
 
 struct DecayMeasures {
@@ -236,11 +219,7 @@ DecayMeasures MeasureDecay(const std::vector<double>& h, double dt) {
   return {zero[4] - zero[2], std::log(h[0] / extreme[1]), std::log(extreme[1] / extreme[3])};
 }
 
-std::vector<double> Times(int N, double dt) {
-  std::vector<double> t(N);
-  for (int n = 0; n < N; ++n) t[n] = n * dt;
-  return t;
-}
+using hullopt::testing::Times;
 }  // namespace
 
 TEST_CASE("free decay of a released cylinder: marching against the transform of the same discretisation",
