@@ -3,6 +3,8 @@
 // −C x with the strip's momentum I (all hydrodynamic force on the left, as in the reference paper), BDF2 in time
 // and implicit in v (the force is affine in the current velocity).
 #include <Eigen/Dense>
+#include <catch2/catch.hpp>
+#include <cmath>
 #include <vector>
 
 #include "seakeeping/panel.h"
@@ -46,6 +48,24 @@ inline std::vector<double> Times(int N, double dt) {
   std::vector<double> t(N);
   for (int n = 0; n < N; ++n) t[n] = n * dt;
   return t;
+}
+
+struct DecayMeasures {
+  double period, logdec, logdec_second;
+};
+/// Period between alternate zero crossings (second full cycle); log decrement between successive positive
+/// peaks: the release value x0 and the first positive peak (first cycle), the first and second positive
+/// peaks (second cycle). h is x/x0 at steps of dt [s].
+inline DecayMeasures MeasureDecay(const std::vector<double>& h, double dt) {
+  const int N = static_cast<int>(h.size());
+  std::vector<double> zero, extreme;
+  for (int n = 1; n < N; ++n)
+    if ((h[n - 1] > 0) != (h[n] > 0)) zero.push_back((n - 1 + h[n - 1] / (h[n - 1] - h[n])) * dt);
+  for (int n = 1; n + 1 < N; ++n)
+    if ((h[n] - h[n - 1]) * (h[n + 1] - h[n]) < 0) extreme.push_back(h[n]);
+  REQUIRE(zero.size() >= 5);
+  REQUIRE(extreme.size() >= 4);
+  return {zero[4] - zero[2], std::log(h[0] / extreme[1]), std::log(extreme[1] / extreme[3])};
 }
 
 }  // namespace hullopt::testing

@@ -201,24 +201,8 @@ std::vector<double> ReleaseHistory(const StripOperators& ops, const std::vector<
   return hullopt::testing::ReleaseHistory(ops, panels, body.m, body.C, N);
 }
 
-struct DecayMeasures {
-  double period, logdec, logdec_second;
-};
-// Period between alternate zero crossings (second full cycle); log decrement between successive positive
-// peaks: the release value x0 and the first positive peak (first cycle), the first and second positive
-// peaks (second cycle).
-DecayMeasures MeasureDecay(const std::vector<double>& h, double dt) {
-  const int N = static_cast<int>(h.size());
-  std::vector<double> zero, extreme;
-  for (int n = 1; n < N; ++n)
-    if ((h[n - 1] > 0) != (h[n] > 0)) zero.push_back((n - 1 + h[n - 1] / (h[n - 1] - h[n])) * dt);
-  for (int n = 1; n + 1 < N; ++n)
-    if ((h[n] - h[n - 1]) * (h[n + 1] - h[n]) < 0) extreme.push_back(h[n]);
-  REQUIRE(zero.size() >= 5);
-  REQUIRE(extreme.size() >= 4);
-  return {zero[4] - zero[2], std::log(h[0] / extreme[1]), std::log(extreme[1] / extreme[3])};
-}
-
+using hullopt::testing::DecayMeasures;
+using hullopt::testing::MeasureDecay;
 using hullopt::testing::Times;
 }  // namespace
 
