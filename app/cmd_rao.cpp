@@ -35,6 +35,9 @@ void RunRao(const std::string& config_file, const std::string& out_dir) {
   const std::string kernel_kind =
       solver_map.Choice("kernel", {"transient_green", "impulsive"}, "transient_green");
   const io::SolverConfig sc = io::ParseSolverConfig(solver_map);
+  if (kernel_kind == "impulsive" && sc.sectional_force == "pressure")
+    solver_map.Fail("sectional_force", "the impulsive stand-in kernel has the momentum form only (use kernel: "
+                                       "transient_green)");
   hull::Hydrostatics hs;
   try {
     // Sections first: a section that does not reach the waterline is named with its body and station.
@@ -53,7 +56,7 @@ void RunRao(const std::string& config_file, const std::string& out_dir) {
   const double U = speed.MetresPerSecond(hs.L_m, water.g_m_s2);
   const sk::StripKernelBuilder builder = kernel_kind == "impulsive"
                                              ? sk::StripKernelBuilder(sk::FillImpulsiveStripKernel)
-                                             : sk::TransientGreenKernelBuilder();
+                                             : sk::TransientGreenKernelBuilder(sc.Force());
   sk::RaoSolverOptions o;
   o.sections = sc.sections;
   o.panels = sc.panels;
@@ -80,7 +83,8 @@ void RunRao(const std::string& config_file, const std::string& out_dir) {
   std::ostringstream fn;
   fn << "speed U = " << U << " m/s (Fn " << U / std::sqrt(water.g_m_s2 * hs.L_m) << "), method " << sc.method
      << ", kernel " << kernel_kind << ", path " << sc.path << ", " << sc.sections << " sections x "
-     << sc.panels << " panels, Cs = " << sc.cs << (sc.interaction ? "" : ", bodies without interaction");
+     << sc.panels << " panels, Cs = " << sc.cs << (sc.interaction ? "" : ", bodies without interaction")
+     << (sc.sectional_force == "pressure" ? ", sectional force: pressure form" : "");
   try {
     std::vector<std::string> header = {"hull: " + hull_name, fn.str()};
     for (const auto& w : t.warnings) header.push_back("warning: " + w);

@@ -88,7 +88,7 @@ sk::StripKernel BuildDesignKernel(const DesignCase& d) {
                          "(needed here); use method: time_domain_strip");
   return Guard(d, [&] {
     return sk::BuildHullStripKernel(d.hull, SolverOptions(d, d.solver.cs), d.speed_m_s, d.water.rho_kg_m3,
-                                    d.water.g_m_s2, sk::TransientGreenKernelBuilder());
+                                    d.water.g_m_s2, sk::TransientGreenKernelBuilder(d.solver.Force()));
   });
 }
 
@@ -107,7 +107,7 @@ sk::RaoTable ComputeDesignRaos(const DesignCase& d, const std::vector<double>& o
   const double cs = cs_override >= 0.0 ? cs_override : d.solver.cs;
   return Guard(d, [&] {
     return sk::ComputeRaos(d.hull, d.mass, d.speed_m_s, d.water.rho_kg_m3, d.water.g_m_s2, omega_rad_s,
-                           SolverOptions(d, cs), sk::TransientGreenKernelBuilder());
+                           SolverOptions(d, cs), sk::TransientGreenKernelBuilder(d.solver.Force()));
   });
 }
 

@@ -62,6 +62,10 @@ SolverConfig ParseSolverConfig(YamlMap& s, bool frequencies_required) {
   c.stations = s.Choice("stations", {"cell_faces", "cell_midpoints"}, c.stations);
   if (c.stations == "cell_faces" && c.sections < 3)
     s.Fail("sections", "must be >= 3 with stations: cell_faces");
+  c.sectional_force = s.Choice("sectional_force", {"momentum", "pressure"}, c.sectional_force);
+  if (c.sectional_force == "pressure" && c.method != "time_domain_strip")
+    s.Fail("sectional_force", "pressure applies to method: time_domain_strip only (strip_theory_stf has its own "
+                              "frequency-domain sectional force)");
   if (frequencies_required || s.Has("frequencies")) {
     auto f = s.Map("frequencies");
     c.frequencies = ParseFrequencies(f);

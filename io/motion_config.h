@@ -11,6 +11,7 @@
 //   path: periodic                   # | time_marching
 //   interaction: true                # multihull bodies share the strips (false: one demihull alone)
 //   stations: cell_faces             # | cell_midpoints: where the strip steps sit (docs/ship-motions.md)
+//   sectional_force: momentum        # | pressure: the reference paper's written form (docs/theory.md)
 //   frequencies: { lambda_over_L: [0.6, 0.8, 1.0] }   # or omega_rad_s / omega_e_rad_s lists, or
 //                { range: { quantity: omega_e_rad_s, from: 2.0, to: 12.0, count: 60 } }
 // mass:                              # defaults from the hull's hydrostatics
@@ -25,6 +26,7 @@
 #include "parametric_hull/hydrostatics.h"
 #include "seakeeping/frequency_list.h"
 #include "seakeeping/strip_kernel.h"
+#include "seakeeping/strip_operators.h"
 
 namespace hullopt::io {
 
@@ -38,9 +40,15 @@ struct SolverConfig {
   bool interaction = true;
   /// Strip steps at the cell faces (bow and transom sections included; the default) or the cell midpoints.
   std::string stations = "cell_faces";
+  /// Sectional force of the time-domain strips: the strip momentum's rate of change (default) or the paper's
+  /// fixed-point pressure integral (sk::SectionalForce).
+  std::string sectional_force = "momentum";
   sk::FrequencySpec frequencies;
   sk::StationLayout Layout() const {
     return stations == "cell_midpoints" ? sk::StationLayout::kCellMidpoints : sk::StationLayout::kCellFaces;
+  }
+  sk::SectionalForce Force() const {
+    return sectional_force == "pressure" ? sk::SectionalForce::kPressure : sk::SectionalForce::kMomentum;
   }
 };
 

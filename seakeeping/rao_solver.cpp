@@ -9,10 +9,11 @@
 
 namespace hullopt::sk {
 
-StripKernelBuilder TransientGreenKernelBuilder() {
-  return [](StripKernel* k) {
+StripKernelBuilder TransientGreenKernelBuilder(SectionalForce force) {
+  return [force](StripKernel* k) {
     StripOperatorOptions o;
     o.layout = k->layout;
+    o.sectional_force = force;
     StripKernel built = BuildStripKernelMirrorReduced(k->panels, k->x_m, k->dt_s, k->rho_kg_m3, k->g_m_s2, o);
     k->force = std::move(built.force);
     k->system_condition = std::move(built.system_condition);

@@ -11,6 +11,7 @@
 #include "seakeeping/head_sea_ship_model.h"
 #include "seakeeping/rao_table.h"
 #include "seakeeping/strip_geometry.h"
+#include "seakeeping/strip_operators.h"
 #include "seakeeping/time_marching_motion.h"
 
 namespace hullopt::sk {
@@ -19,8 +20,9 @@ namespace hullopt::sk {
 using StripKernelBuilder = std::function<void(StripKernel*)>;
 
 /// The paper's kernel: transient free-surface Green function strip operators reduced to force rows
-/// (BuildStripKernel of strip_kernel_builder.h) on the kernel's panels, dt, ρ and g.
-StripKernelBuilder TransientGreenKernelBuilder();
+/// (BuildStripKernel of strip_kernel_builder.h) on the kernel's panels, dt, ρ and g, with the sectional force
+/// in the given form (strip_operators.h).
+StripKernelBuilder TransientGreenKernelBuilder(SectionalForce force = SectionalForce::kMomentum);
 
 struct RaoSolverOptions {
   enum class Path { kPeriodic, kTimeMarching };

@@ -14,7 +14,10 @@
 // the motion; the momentum form is the one consistent with slender-body theory (it is what yields the −U
 // dA33/dx-type terms and the transom term) and with the neglected interaction between the steady displacement
 // flow and the unsteady potential; see docs/theory.md, "Sectional force in a strip whose section changes".
+// Operators built for SectionalForce::kPressure give the reference paper's written form instead: the same
+// stencil on the momenta of the earlier potentials on the current contour (φ_t at fixed points).
 #include <Eigen/Dense>
+#include <array>
 #include <vector>
 
 #include "seakeeping/strip_operators.h"
@@ -51,6 +54,7 @@ class StripMarcher {
   std::vector<double> momentum_;
   Eigen::VectorXd history_rhs_;  // Σ_{k<n} Memory(n, k) σ_k for the next step n
   double history_momentum_ = 0;  // Σ_{k<n} MomentumMemory(n, k) σ_k
+  std::array<double, 2> earlier_momentum_{};  // pressure form: Σ_{k<=n−s} PressureMomentum(s, n, k) σ_k
 };
 
 /// Sectional force from the momentum history: f_n = (3 I_n − 4 I_{n−1} + I_{n−2})/(2 dt), I_{<0} = 0.

@@ -1,5 +1,6 @@
 #include "seakeeping/strip_operators.h"
 
+#include <algorithm>
 #include <limits>
 #include <cmath>
 #include <stdexcept>
@@ -47,15 +48,17 @@ struct Level {
   Eigen::RowVectorXd pl;
 };
 
-Level ComputeLevel(const FieldSet& f, const std::vector<Panel>& src, double s, double g, double rho) {
+// Without `velocity` only pl is computed (nv stays zero).
+Level ComputeLevel(const FieldSet& f, const std::vector<Panel>& src, double s, double g, double rho,
+                   bool velocity = true) {
   const int nf = static_cast<int>(f.cy.size()), ns = static_cast<int>(src.size());
-  Level out{Eigen::MatrixXd::Zero(nf, ns), Eigen::RowVectorXd::Zero(ns)};
+  Level out{Eigen::MatrixXd::Zero(velocity ? nf : 0, ns), Eigen::RowVectorXd::Zero(ns)};
   if (s == 0.0 || ns == 0) return out;
   // Adjacent panels of one contour share an end point: evaluate the kernel there once.
   std::vector<char> shared(ns, 0);
   for (int j = 1; j < ns; ++j) shared[j] = src[j - 1].y2 == src[j].y1 && src[j - 1].z2 == src[j].z1;
   std::vector<std::complex<double>> h1(ns), h2(ns);
-  for (int i = 0; i < nf; ++i) {
+  for (int i = 0; velocity && i < nf; ++i) {
     for (int j = 0; j < ns; ++j) {
       const Panel& p = src[j];
       h1[j] = shared[j] ? h2[j - 1] : TransientGreenTimeIntegral(f.cy[i] - p.y1, f.cz[i] + p.z1, s, g);
@@ -247,6 +250,12 @@ const Eigen::RowVectorXd& StripOperators::MomentumMemory(int n, int k) const {
   return k == 0 ? momentum_memory_[1][n] : momentum_memory_[0][n - k];
 }
 
+const Eigen::RowVectorXd& StripOperators::PressureMomentum(int s, int n, int k) const {
+  if (force_ != SectionalForce::kPressure || s < 1 || s > 2 || n < 0 || n >= steps_ || k < 0 || k > n - s)
+    throw std::out_of_range("PressureMomentum: needs operators built for the pressure form, s in 1..2, 0 <= k <= n - s");
+  return pressure_momentum_[s - 1][n][k];
+}
+
 const Eigen::MatrixXd& StripOperators::LagMemory(int l) const {
   if (!invariant_ || l < 1 || l >= steps_)
     throw std::out_of_range("LagMemory: needs time-invariant operators, 1 <= l < steps");
@@ -267,6 +276,7 @@ StripOperators BuildStripOperators(const std::vector<std::vector<Panel>>& panels
   StripOperators ops;
   ops.steps_ = N, ops.dt_ = dt, ops.rho_ = rho, ops.g_ = g, ops.invariant_ = false;
   ops.layout_ = options.layout;
+  ops.force_ = options.sectional_force;
   if (ops.layout_ == StationLayout::kCellFaces && N < 4)
     throw std::invalid_argument("strip operators: stations at the cell faces need >= 4 steps, got " +
                                 std::to_string(N));
@@ -295,6 +305,8 @@ StripOperators BuildStripOperators(const std::vector<std::vector<Panel>>& panels
   ops.momentum_current_.resize(N);
   ops.memory_.resize(N);
   ops.momentum_memory_.resize(N);
+  const bool pressure = ops.force_ == SectionalForce::kPressure;
+  if (pressure) ops.pressure_momentum_[0].resize(N), ops.pressure_momentum_[1].resize(N);
   // Each n is independent and computed by one thread in a fixed order: bitwise identical for any thread
   // count.
 #pragma omp parallel for schedule(dynamic, 1)
@@ -335,6 +347,31 @@ StripOperators BuildStripOperators(const std::vector<std::vector<Panel>>& panels
       } else {
         ops.memory_[n][k] = b.nv - a.nv;
         ops.momentum_memory_[n][k] = b.pl - a.pl;
+      }
+    }
+    // Pressure form: the momentum on THIS contour of the potential at t_p, p = n − s. Sources of step p are
+    // current there (Rankine part plus the memory of [t_p − dt/2, t_p]), earlier ones are memory.
+    for (int sh = 1; pressure && sh <= 2; ++sh) {
+      const int p = n - sh;
+      auto& rows = ops.pressure_momentum_[sh - 1][n];
+      rows.resize(std::max(p + 1, 0));
+      for (int k = 0; k <= p; ++k) {
+        Eigen::RowVectorXd row = Eigen::RowVectorXd::Zero(ops.reduced_ ? maps[k].half.size() : panels_per_step[k].size());
+        double s1 = 0.0, s2 = 0.5 * dt;
+        if (k == p) {
+          Eigen::MatrixXd unused;
+          Rankine(f, panels_per_step[p], rho, &unused, &row);
+          if (ops.reduced_) row = ReduceColumns(row, maps[p]);
+        } else {
+          s1 = (p - k - 0.5) * dt;
+          s2 = k == 0 ? p * dt : (p - k + 0.5) * dt;
+        }
+        if (!(k == p && p == 0)) {  // step 0 alone has no memory at t_0
+          const Level a = reduce(ComputeLevel(f, panels_per_step[k], s1, g, rho, false), k);
+          const Level b = reduce(ComputeLevel(f, panels_per_step[k], s2, g, rho, false), k);
+          row += b.pl - a.pl;
+        }
+        rows[k] = row;
       }
     }
     ops.system_[n] = A;

@@ -14,7 +14,9 @@
 // the current sources over [t_n − dt/2, t_n]), Memory(n, k) = (1/2π)∫∫ ∂G~/∂n over interval k (exact in space
 // and time, theory notes §1.6). The vertical momentum of the strip's disturbance flow,
 //   I_n = ρ ∫_{S_n} φ n_z dl = MomentumCurrent(n) σ_n + Σ_{k<n} MomentumMemory(n, k) σ_k   [kg/s],
-// gives the sectional force f = dI/dt (n into the fluid), see strip_marcher.h and docs/theory.md.
+// gives the sectional force f = dI/dt (n into the fluid), see strip_marcher.h and docs/theory.md. The
+// alternative pressure form (SectionalForce::kPressure) needs the momentum of the potential at EARLIER times
+// on the CURRENT contour, PressureMomentum(s, n, k).
 #include <Eigen/Dense>
 #include <string>
 #include <vector>
@@ -23,6 +25,18 @@
 #include "seakeeping/strip_kernel.h"
 
 namespace hullopt::sk {
+
+/// How the sectional force follows from the strip's potential (docs/theory.md, "Sectional force in a strip
+/// whose section changes").
+enum class SectionalForce {
+  /// f = dI/dt, I = ρ∫_{S(t)} φ n_z dl on the moving contour: the slender-body (STF-consistent) form, the
+  /// default.
+  kMomentum,
+  /// f = ρ∫_{S(t)} φ_t n_z dl with φ_t at FIXED points of the current contour (earlier potentials evaluated
+  /// there): the reference paper's written formula, f = −ρ∫ ∂φ/∂t n_z dl (its n into the body). Differs from
+  /// kMomentum only where the section changes along the hull; costs about three times the momentum rows.
+  kPressure,
+};
 
 struct StripOperatorOptions {
   /// Gauss points per body panel for the momentum integral ∫φ n_z dl (1 = panel mid-points).
@@ -38,6 +52,8 @@ struct StripOperatorOptions {
   /// marcher and the kernel reduction. Operators of a fixed section (BuildFixedSectionOperators) always use
   /// plain BDF2.
   StationLayout layout = kDefaultStationLayout;
+  /// Sectional force form (general operators; a fixed section gives the same force either way).
+  SectionalForce sectional_force = SectionalForce::kMomentum;
   bool IsValid(std::string* error) const;
 };
 
@@ -77,6 +93,11 @@ class StripOperators {
   /// Row vectors of I_n [kg/s per (m/s) of σ = kg/m]: the current sources and the sources of step k < n.
   const Eigen::RowVectorXd& MomentumCurrent(int n) const;
   const Eigen::RowVectorXd& MomentumMemory(int n, int k) const;
+  /// The sectional force form the operators were built for (kMomentum for a fixed section, where both agree).
+  SectionalForce Force() const { return force_; }
+  /// kPressure only: ρ∫_{S_n} φ(·, t_{n−s}) n_z dl, the momentum on the contour of step n of the potential at
+  /// the earlier time t_{n−s} (s = 1, 2), per unit σ of step k <= n − s [kg/m] (1 × P_k).
+  const Eigen::RowVectorXd& PressureMomentum(int s, int n, int k) const;
 
   /// Time-invariant operators only: memory over a FULL interval centred at lag l·dt (l >= 1), the
   /// steady-state form used for frequency responses. Valid for 1 <= l < Steps().
@@ -106,6 +127,9 @@ class StripOperators {
   std::vector<Eigen::RowVectorXd> momentum_current_;
   std::vector<std::vector<Eigen::MatrixXd>> memory_;
   std::vector<std::vector<Eigen::RowVectorXd>> momentum_memory_;
+  SectionalForce force_ = SectionalForce::kMomentum;
+  // kPressure: pressure_momentum_[s − 1][n][k], k = 0..n − s.
+  std::vector<std::vector<Eigen::RowVectorXd>> pressure_momentum_[2];
 };
 
 /// Operators for a sequence of panel sets (one per step; a step may hold several bodies, and may be empty),

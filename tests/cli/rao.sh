@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # hullopt rao end to end: rao.csv with the contract header, and one-line errors with a non-zero exit for bad
-# input (zero or negative speed, empty or negative frequency list, unknown key).
+# input (zero or negative speed, empty or negative frequency list, unknown key, sectional force form).
 set -u
 bin="$1"
 tmp=$(mktemp -d)
@@ -40,6 +40,15 @@ expect_error empty_list "$(base "{ Fn: 0.75 }" "{ omega_rad_s: [] }")" "omega_ra
 expect_error negative_freq "$(base "{ Fn: 0.75 }" "{ omega_e_rad_s: [2.0, -1.0] }")" "> 0"
 expect_error unknown_key "$(base "{ Fn: 0.75 }" "{ omega_rad_s: [2.0] }")
 extra_key: 1" "extra_key"
+expect_error bad_force "$(base "{ Fn: 0.75 }" "{ omega_rad_s: [2.0] }" | sed 's/Cs: 0.024,/Cs: 0.024, sectional_force: lift,/')" \
+  "solver.sectional_force"
+expect_error impulsive_pressure "$(base "{ Fn: 0.75 }" "{ omega_rad_s: [2.0] }" | sed 's/Cs: 0.024,/Cs: 0.024, sectional_force: pressure,/')" \
+  "momentum form only"
+# The paper's pressure form runs with the transient kernel and says so in the header.
+base "{ Fn: 0.75 }" "{ lambda_over_L: [1.5, 2.0] }" | sed 's/kernel: impulsive,/kernel: transient_green, sectional_force: pressure,/' > "$tmp/p.yaml"
+"$bin" rao "$tmp/p.yaml" --out "$tmp/p" || fail "pressure form refused"
+grep -q "sectional force: pressure form" "$tmp/p/rao.csv" || fail "rao.csv header does not name the pressure form"
+grep -qi nan "$tmp/p/rao.csv" && fail "NaN in rao.csv (pressure form)"
 # A hull whose sections stop below the draught (deck edge under water): named body and station.
 printf 'x_m,y_m,z_m\n0,0,0\n0,0.5,0.1\n1,0,0\n1,0.5,0.1\n2,0,0\n2,0.5,0.1\n' > "$tmp/low.csv"
 expect_error low_deck "hull: { offsets_csv: $tmp/low.csv, draught_m: 0.2 }

@@ -63,6 +63,10 @@ TEST_CASE("bad solver and mass input: one clear error each", "[config][errors]")
   CHECK_THROWS_WITH(bad("stations: ends\nfrequencies: { omega_rad_s: [1.0] }\n"), Catch::Contains("solver.stations"));
   CHECK_THROWS_WITH(bad("sections: 2\nfrequencies: { omega_rad_s: [1.0] }\n"),
                     Catch::Contains("stations: cell_faces"));
+  CHECK_THROWS_WITH(bad("sectional_force: lift\nfrequencies: { omega_rad_s: [1.0] }\n"),
+                    Catch::Contains("solver.sectional_force"));
+  CHECK_THROWS_WITH(bad("method: strip_theory_stf\nsectional_force: pressure\nfrequencies: { omega_rad_s: [1.0] }\n"),
+                    Catch::Contains("time_domain_strip only"));
   CHECK_THROWS_AS(bad("Cs: 0.1\n"), InputError);  // frequencies are required
 
   auto mass = [](const std::string& text) {

@@ -82,7 +82,8 @@ void CompareAgainstPeriodic(const sk::RaoTable& periodic, const sk::RaoTable& ot
   }
 }
 
-void CheckPaths(const Case& c, sk::StationLayout layout = sk::kDefaultStationLayout) {
+void CheckPaths(const Case& c, sk::StationLayout layout = sk::kDefaultStationLayout,
+                sk::SectionalForce force = sk::SectionalForce::kMomentum) {
   sk::StripGeometryOptions geo;
   geo.sections = 20;
   geo.panels = 8;
@@ -90,8 +91,9 @@ void CheckPaths(const Case& c, sk::StationLayout layout = sk::kDefaultStationLay
   sk::StripKernel kernel = sk::StripKernelGeometry(c.form, geo, c.speed, c.rho, c.g);
   sk::StripOperatorOptions ops_options;
   ops_options.layout = layout;
+  ops_options.sectional_force = force;
   const auto ops = sk::BuildStripOperators(kernel.panels, kernel.dt_s, c.rho, c.g, ops_options);
-  sk::TransientGreenKernelBuilder()(&kernel);
+  sk::TransientGreenKernelBuilder(force)(&kernel);
   sk::MotionOptions mo;
   mo.damping_cs = c.cs;
   mo.hull_name = c.name;
@@ -144,4 +146,10 @@ TEST_CASE("transient kernel: paths agree, NPL 5b-like catamaran Fr 0.8", "[motio
 // layout's own end rows.
 TEST_CASE("transient kernel: paths agree, Delft 372 Fn 0.75, cell faces", "[motions][transient][delft372]") {
   CheckPaths(Delft372(), sk::StationLayout::kCellFaces);
+}
+
+// The reference paper's written sectional force (fixed-point pressure integral, strip_operators.h): the paths
+// agree and the long-wave limits hold with it too.
+TEST_CASE("transient kernel: paths agree, Delft 372 Fn 0.75, pressure form", "[motions][transient][delft372]") {
+  CheckPaths(Delft372(), sk::StationLayout::kCellFaces, sk::SectionalForce::kPressure);
 }

@@ -348,3 +348,55 @@ TEST_CASE("heave damping equals the radiated wave energy flux", "[td][verificati
     }
   }
 }
+
+TEST_CASE("pressure-form sectional force: equals the momentum form for a section that does not change",
+          "[td][kernel][pressure]") {
+  // For a contour that stays put, ∫φ_t n_z dl at fixed points IS d/dt ∫φ n_z dl: the pressure form's rows
+  // (earlier potentials evaluated on the current contour, computed separately from the momentum rows) must
+  // reproduce the momentum form to round-off. Two bodies, so the cross-body memory enters too.
+  constexpr double kTolIdentity = 1e-9;  // same physics through different operator rows: round-off only
+  const int N = 8;
+  auto a = PanelSymmetricSection(SemicircleContour(0.7), 8, -1.5);
+  const auto b = PanelSymmetricSection(SemicircleContour(0.7), 8, 1.5);
+  a.insert(a.end(), b.begin(), b.end());
+  const std::vector<std::vector<Panel>> panels(N, a);
+  std::vector<double> x(N);
+  for (int n = 0; n < N; ++n) x[n] = 10.0 - 0.4 * n;
+  StripOperatorOptions momentum, pressure;
+  pressure.sectional_force = SectionalForce::kPressure;
+  const StripKernel Km = BuildStripKernel(panels, x, 0.05, kRho, kG, momentum);
+  const StripKernel Kp = BuildStripKernel(panels, x, 0.05, kRho, kG, pressure);
+  for (int n = 0; n < N; ++n)
+    for (int m = 0; m <= n; ++m)
+      for (Eigen::Index j = 0; j < Km.force[n][m].size(); ++j)
+        CHECK(Kp.force[n][m](j) == Approx(Km.force[n][m](j)).epsilon(kTolIdentity).margin(kTolIdentity * 1e4));
+}
+
+TEST_CASE("pressure-form sectional force: strip kernel reproduces the marching solver for changing sections",
+          "[td][kernel][pressure]") {
+  constexpr double kTolKernel = 1e-9;  // same arithmetic reordered: round-off only
+  const int N = 7;
+  const auto panels = ChangingStrip(N);
+  const double dt = 0.04;
+  StripOperatorOptions o;
+  o.sectional_force = SectionalForce::kPressure;
+  const auto ops = BuildStripOperators(panels, dt, kRho, kG, o);
+  std::vector<double> x(N);
+  for (int n = 0; n < N; ++n) x[n] = 10.0 - 0.8 * n;
+  const StripKernel K = BuildStripKernel(ops, x);
+  const StripKernel Km = BuildStripKernel(panels, x, dt, kRho, kG, StripOperatorOptions{});
+  std::mt19937 rng(11);
+  std::normal_distribution<double> normal;
+  std::vector<Eigen::VectorXd> V(N);
+  for (int n = 0; n < N; ++n) V[n] = Eigen::VectorXd::NullaryExpr(panels[n].size(), [&] { return normal(rng); });
+  StripMarcher marcher(ops);
+  double differs = 0;  // the two forms must differ where the sections change (else the option does nothing)
+  for (int n = 0; n < N; ++n) {
+    const double f_march = marcher.Advance(V[n]);
+    double f_kernel = 0, f_momentum = 0;
+    for (int m = 0; m <= n; ++m) f_kernel += K.force[n][m].dot(V[m]), f_momentum += Km.force[n][m].dot(V[m]);
+    CHECK(f_kernel == Approx(f_march).epsilon(kTolKernel).margin(kTolKernel * 1e4));
+    differs = std::max(differs, std::fabs(f_kernel - f_momentum) / std::max(std::fabs(f_momentum), 1.0));
+  }
+  CHECK(differs > 1e-3);
+}
