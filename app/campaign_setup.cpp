@@ -4,6 +4,7 @@
 #include <omp.h>
 #endif
 
+#include <cstdio>
 #include <optional>
 
 #include "app/evaluator_factory.h"
@@ -42,6 +43,28 @@ int ResolveThreads(int requested) {
 #else
   return 1;
 #endif
+}
+
+CampaignWarnings CollectWarnings(const std::vector<opt::EvaluationRecord>& records) {
+  CampaignWarnings w;
+  for (std::size_t i = 0; i < records.size(); ++i) {
+    const auto& r = records[i].result;
+    if (!r.produced || r.warning.empty()) continue;
+    if (w.count++ == 0) w.first_evaluation = static_cast<long>(i), w.first_message = r.warning;
+  }
+  return w;
+}
+
+void ReportWarnings(const std::vector<opt::EvaluationRecord>& records, long best, const std::string& history_file,
+                    bool quiet, nlohmann::json* summary) {
+  const CampaignWarnings w = CollectWarnings(records);
+  (*summary)["evaluations_with_warning"] = w.count;
+  if (best >= 0 && !records[best].result.warning.empty()) (*summary)["best_warning"] = records[best].result.warning;
+  if (quiet || w.count == 0) return;
+  std::fprintf(stderr,
+               "hullopt: warning: %ld of %zu evaluations carry a warning (message column of %s); first, "
+               "evaluation %ld: %s\n",
+               w.count, records.size(), history_file.c_str(), w.first_evaluation, w.first_message.c_str());
 }
 
 }  // namespace hullopt::app

@@ -1,12 +1,15 @@
 #pragma once
 // Loading and checking a campaign config for `hullopt optimize` / `hullopt explore`: everything that can be
 // wrong with the input is reported here, before any evaluation.
+#include <nlohmann/json.hpp>
 #include <yaml-cpp/yaml.h>
 
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "io/campaign_config.h"
+#include "optimizer/evaluation_record.h"
 #include "optimizer/evaluator.h"
 
 namespace hullopt::app {
@@ -24,5 +27,17 @@ LoadedCampaign LoadCampaign(const std::string& config_file, io::CampaignCommand 
 
 /// Number of OpenMP threads to use: `requested` if > 0, else the OpenMP default (1 without OpenMP).
 int ResolveThreads(int requested);
+
+/// Evaluations of a campaign whose design was produced with a warning (opt::EvalResult::warning).
+struct CampaignWarnings {
+  long count = 0;
+  long first_evaluation = -1;  ///< -1 when count is 0
+  std::string first_message;
+};
+CampaignWarnings CollectWarnings(const std::vector<opt::EvaluationRecord>& records);
+/// Adds "evaluations_with_warning" (and, when the best design has one, "best_warning") to a summary, and
+/// unless quiet prints one line to stderr naming the count, the first such evaluation and its warning.
+void ReportWarnings(const std::vector<opt::EvaluationRecord>& records, long best, const std::string& history_file,
+                    bool quiet, nlohmann::json* summary);
 
 }  // namespace hullopt::app

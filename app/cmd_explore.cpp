@@ -150,6 +150,7 @@ void RunExplore(const ExploreCliOptions& o) {
     for (std::size_t j = 0; j < def.variables.size(); ++j) bv[def.variables[j].name] = recs[best].x[j];
     s["best_variables"] = bv;
   }
+  ReportWarnings(recs, best, journal.path(), o.quiet, &s);
   const auto names = def.VariableNames();
   try {
     const opt::SensitivityResult sens = opt::ComputeSensitivity(fx, fy, names);

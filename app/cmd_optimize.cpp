@@ -216,6 +216,7 @@ void RunOptimize(const OptimizeOptions& o) {
     s["best_evaluation"] = nullptr;
   }
   s["runs"] = runs;
+  ReportWarnings(recs, best, journal.path(), o.quiet, &s);
   s["wall_time_s"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
   io::WriteJson(OutPath(o.out, "summary.json"), s);
   io::WriteOptimizePlots(o.out, recs, def.VariableNames(), def.LowerBounds(), def.UpperBounds(),

@@ -15,6 +15,7 @@ std::unique_ptr<opt::Evaluator> MakeEvaluator(io::YamlMap& root, io::YamlMap& bl
   o.dimension = static_cast<int>(campaign.variables.size());
   o.eval_delay_ms = objective.Number("eval_delay_ms", o.eval_delay_ms);
   o.refuse_above_sum = objective.Number("refuse_above_sum", o.refuse_above_sum);
+  o.warn_above_sum = objective.Number("warn_above_sum", o.warn_above_sum);
   objective.Finish();
   std::string error;
   if (!o.IsValid(&error)) throw io::InputError(block.Where("objective") + ": " + error);

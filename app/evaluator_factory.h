@@ -13,7 +13,7 @@ namespace hullopt::app {
 /// root: the whole config; block: the campaign block (optimize:/explore:) whose `objective` key selects the
 /// objective; campaign: variables (in order) and constraints as read. Currently supports only the analytic
 /// test/demo objective `objective: { analytic: sphere|rosenbrock|rastrigin|linear, eval_delay_ms: 0,
-/// refuse_above_sum: 1e300 }`; with it the physics blocks of root are ignored. Throws io::InputError.
+/// refuse_above_sum: 1e300, warn_above_sum: 1e300 }`; with it the physics blocks of root are ignored. Throws io::InputError.
 std::unique_ptr<opt::Evaluator> MakeEvaluator(io::YamlMap& root, io::YamlMap& block,
                                               const opt::CampaignDefinition& campaign);
 

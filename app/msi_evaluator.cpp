@@ -36,6 +36,7 @@ class MsiEvaluator : public opt::Evaluator {
       return r;
     }
     const sk::RaoTable rao = ComputeDesignRaos(d, EvaluationFrequencies());
+    for (const auto& w : rao.warnings) r.warning += (r.warning.empty() ? "" : "; ") + w;
     const sk::DesignEvaluation ev = sk::EvaluateDesign(rao, d.Extent(), spectra_, {}, eval_);
     double sum = 0, wsum = 0;
     for (std::size_t i = 0; i < ev.seas.size(); ++i) {

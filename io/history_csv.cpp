@@ -70,7 +70,9 @@ std::string FormatHistoryRow(long evaluation, const opt::EvaluationRecord& rec,
   char wall[32];
   std::snprintf(wall, sizeof wall, "%.6g", rec.wall_time_s);
   row += std::string(",") + wall + "," + std::to_string(rec.run) + "," + std::to_string(rec.step) + "," +
-         Sanitise(produced ? std::string() : rec.result.error) + "\n";
+         Sanitise(produced ? (rec.result.warning.empty() ? std::string() : kWarningPrefix + rec.result.warning)
+                           : rec.result.error) +
+         "\n";
   return row;
 }
 
@@ -107,7 +109,11 @@ HistoryRow ParseHistoryRow(const std::string& line, const HistoryLayout& layout,
   r.wall_time_s = num(f[c++]);
   r.run = static_cast<int>(integer(f[c++]));
   r.step = static_cast<int>(integer(f[c++]));
-  r.result.error = f[c++];
+  const std::string& message = f[c++];
+  if (message.compare(0, kWarningPrefix.size(), kWarningPrefix) == 0)
+    r.result.warning = message.substr(kWarningPrefix.size());
+  else
+    r.result.error = message;
   r.result.produced = r.result.error.empty();
   if (!r.result.produced) {
     r.result.sea_values.clear();

@@ -6,7 +6,9 @@
 //   evaluation, <design variables by name>, objective, feasible, <per-sea columns>, <constrained quantities>,
 //   wall_time_s, run, step, message
 // Numbers are written with %.17g so that they read back bit-identical. A design the generator refused has
-// objective/sea/quantity values "nan", feasible 0 and the refusal in `message` (commas replaced by ';').
+// objective/sea/quantity values "nan", feasible 0 and the refusal in `message` (commas replaced by ';'). An
+// evaluated design with a warning (opt::EvalResult::warning, e.g. near-singular strip sections) has its numbers
+// and "warning: ..." in `message`; an evaluated design without one has `message` empty.
 // run is the multistart run (-1 for the baseline evaluation; 0 for exploration samples), step the position
 // in that run's sequence.
 #include <cstddef>
@@ -16,6 +18,9 @@
 #include "optimizer/evaluation_record.h"
 
 namespace hullopt::io {
+
+/// Prefix of a produced design's warning in the `message` column.
+inline const std::string kWarningPrefix = "warning: ";
 
 struct HistoryLayout {
   std::vector<std::string> variables;

@@ -78,6 +78,9 @@ EvalResult AnalyticEvaluator::Evaluate(const std::vector<double>& x) {
   EvalResult r;
   r.objective = AnalyticFunction(options_.function, x);
   r.quantities = {sum, r2};
+  if (sum > options_.warn_above_sum)
+    r.warning = "sum of the variables " + std::to_string(sum) + " exceeds warn_above_sum " +
+                std::to_string(options_.warn_above_sum);
   return r;
 }
 

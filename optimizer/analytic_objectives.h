@@ -10,7 +10,8 @@
 //
 // Variables are named x1..x16 or single letters a..z (any order).
 // Quantities for constraints: "sum" = Σ x_i and "radius_sq" = Σ x_i². Sea columns: none.
-// A design with Σ x_i > refuse_above_sum is refused with std::domain_error, like a generator refusal.
+// A design with Σ x_i > refuse_above_sum is refused with std::domain_error, like a generator refusal; one
+// with Σ x_i > warn_above_sum is evaluated but carries a warning, like a near-singular hull.
 #include <string>
 #include <vector>
 
@@ -23,6 +24,7 @@ struct AnalyticObjectiveOptions {
   int dimension = 2;                ///< number of design variables (>= 1; rosenbrock >= 2)
   double eval_delay_ms = 0.0;       ///< [ms] sleep per evaluation, to imitate a slow objective (tests)
   double refuse_above_sum = 1e300;  ///< designs with Σ x_i above this are refused (tests refusal handling)
+  double warn_above_sum = 1e300;    ///< designs with Σ x_i above this carry a warning (tests warning handling)
   bool IsValid(std::string* error) const;
 };
 

@@ -22,6 +22,9 @@ struct EvalResult {
   bool produced = true;
   /// Why the design was refused (the generator's message); empty when produced.
   std::string error;
+  /// A produced design's non-fatal note (e.g. near-singular strip sections, whose RAOs may be unconverged);
+  /// empty when there is none. history.csv carries it in `message` as "warning: ...".
+  std::string warning;
 };
 
 /// A design evaluation. Implementations must be deterministic (same x → same result, bit for bit) and, if

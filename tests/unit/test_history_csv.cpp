@@ -61,6 +61,23 @@ TEST_CASE("rows read back bit for bit", "[history]") {
   CHECK_FALSE(q.feasible);
 }
 
+TEST_CASE("a produced design's warning is kept in message and read back as produced", "[history]") {
+  // Resuming must not mistake a warned design for a refused one: its numbers stay, its warning comes back.
+  const auto layout = Layout();
+  auto a = Rec(0.25, 0.5, true);
+  a.result.warning = "near-singular strip section at x = 1.2 m, condition 1080 > 200";
+  const std::string row = io::FormatHistoryRow(0, a, {1.5}, layout);
+  CHECK(row.find(",warning: near-singular strip section at x = 1.2 m; condition 1080 > 200\n") != std::string::npos);
+  const auto f = io::ParseHistory(layout.Header() + "\n" + row, "h.csv", layout);
+  REQUIRE(f.rows.size() == 1);
+  const auto& r = f.rows[0].record;
+  CHECK(r.result.produced);
+  CHECK(r.result.error.empty());
+  CHECK(r.result.warning == "near-singular strip section at x = 1.2 m; condition 1080 > 200");
+  CHECK(r.result.objective == a.result.objective);
+  CHECK(f.rows[0].reported[0] == 1.5);
+}
+
 TEST_CASE("an incomplete last line is detected and dropped; appending resumes after the last row",
           "[history][resume]") {
   const auto layout = Layout();
