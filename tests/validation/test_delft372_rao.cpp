@@ -1,21 +1,20 @@
 // Delft 372 catamaran at Fn 0.75 (issue 4, item 4): computed heave and pitch RAOs (both demihulls in the
 // strips, transient Green-function kernel, Cs = 0.024 as in the paper) against the tank data of van 't Veer
 // (1998). Acceptance: the peak heave RAO within 15% of the measured peak, at a λ/L within 10% of the measured
-// one. Computed with the default strip layout (steps at the cell faces, exact transom momentum), which is
-// converged in sections at 40 × 14 for this hull (docs/ship-motions.md, "Convergence"), at 80 × 28 and at the
-// paper's 40 × 14; the older midpoint layout at 80 × 28 is reported beside them. Writes the comparison plot
-// to the build folder (docs/delft372_rao_fn075.svg is a copy).
+// one. Computed with the default strip layout (steps at the cell faces, exact transom momentum). Writes the
+// comparison plot to the build folder (docs/delft372_rao_fn075.svg is a copy).
 //
-// A reported miss: the converged peak is 2.15 (80 × 28) against the measured 2.53, −15.0%, just outside the
-// 15% (40 × 14: −15.5%). The peak check is therefore CHECK_NOFAIL — it prints the miss on every run without
-// failing CI — and must become a CHECK when the cause is removed; the λ/L of the peak and the short-wave
-// level are hard checks. The midpoint layout's −14.6% at 80 × 28 was inside only because of its transom
-// extrapolation error (+8% on the transom momentum at 40 sections). Findings (docs/ship-motions.md): the 2D
-// demihull interaction in the strips lowers the peak by 14% (one demihull alone: 2.47 converged), and Cs is not
-// the cause (Cs = 0 raises it by about 0.2). The interaction comes wholly through the memory part of the
-// coupling, and that 2D coupling is verified against the frequency-domain pair (verification_td_twin_release).
-// The paper's written sectional force (pressure form, reported below) gives −11.7% but loses the pitch
-// resonance; the default is not switched to pass (docs/ship-motions.md). Nothing was tuned toward the tank.
+// The prediction sits near the edge of the 15%, so the check is made where the discretisation no longer moves
+// it by more than the margin: sections are converged (28 panels: 2.154, 2.152, 2.150 at 40, 80, 160
+// sections), panels converge from below (40 sections: 2.138, 2.154, 2.164, 2.168 at 14, 28, 56, 112 panels,
+// grid maxima), so the converged peak is about 2.17, −14.3% to −14.6%. Checked at 80 × 56: −14.6%, inside by
+// 0.4 points. Reported beside it: 80 × 28, −15.0% (a miss by 0.02 points, the figure of the previous
+// session), and the paper's 40 × 14, −15.5% (the tool's default resolution misses). Findings
+// (docs/ship-motions.md): the 2D demihull interaction in the strips lowers the peak by 14% (one demihull
+// alone: 2.47), wholly through the memory part of the coupling, which is verified against the
+// frequency-domain pair (verification_td_twin_release); Cs is not the cause (Cs = 0 raises the peak by about
+// 0.1). The paper's written sectional force (pressure form, reported below) gives −11.7% but loses the pitch
+// resonance; the default is not switched (docs/ship-motions.md). Nothing was tuned toward the tank.
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <iostream>
@@ -56,28 +55,36 @@ TEST_CASE("Delft 372 Fn 0.75: peak heave against the tank", "[validation][delft3
     return sk::ComputeRaos(hullopt::testing::Delft372Hull(HULLOPT_SOURCE_DIR), hullopt::testing::Delft372Mass(),
                            U, kRho, kG, w, o, sk::TransientGreenKernelBuilder(force));
   };
-  const auto rao = compute(80, 28);
+  // Checked at 80 × 56, the finest resolution measured: the miss margin at 80 × 28 (0.02 points) is smaller
+  // than what panel refinement still moves (40 sections: 2.138, 2.154, 2.164 at 14, 28, 56 panels; sections
+  // are converged: 2.154, 2.152, 2.150 at 40, 80, 160 × 28). 80 × 28 and the paper's 40 × 14 are reported.
+  const auto rao = compute(80, 56);
+  const auto rao_28 = compute(80, 28);
   const auto rao_paper = compute(40, 14);
   const auto rao_mid = compute(80, 28, hullopt::sk::StationLayout::kCellMidpoints);
-  std::vector<double> lam, h, h_paper, h_mid;
+  std::vector<double> lam, h, h_28, h_paper, h_mid;
   for (std::size_t i = 0; i < w.size(); ++i) {
     lam.push_back(2 * M_PI * kG / (w[i] * w[i]) / kL);
     h.push_back(std::abs(rao.heave[i]));
+    h_28.push_back(std::abs(rao_28.heave[i]));
     h_paper.push_back(std::abs(rao_paper.heave[i]));
     h_mid.push_back(std::abs(rao_mid.heave[i]));
   }
   const auto computed_paper = hullopt::opt::InterpolatedPeak(lam, h_paper);
   const auto computed_mid = hullopt::opt::InterpolatedPeak(lam, h_mid);
   const auto computed = hullopt::opt::InterpolatedPeak(lam, h);
+  const auto computed_28 = hullopt::opt::InterpolatedPeak(lam, h_28);
   const auto measured = hullopt::opt::InterpolatedPeak(m.lambda_over_L, m.heave_amp);
   hullopt::io::WriteSvg(
-      hullopt::io::RaoFigure({rao, rao_paper}, {"time-domain strip, 80 × 28", "time-domain strip, 40 × 14"}, kL,
+      hullopt::io::RaoFigure({rao, rao_paper}, {"time-domain strip, 80 × 56", "time-domain strip, 40 × 14"}, kL,
                              "Delft 372, Fn 0.75, both demihulls, Cs 0.024", &m),
       std::string(HULLOPT_BINARY_DIR) + "/delft372_rao_fn075.svg");
   std::cout << "Delft 372 Fn 0.75: computed peak heave " << computed.value << " at lambda/L " << computed.x
-            << " (80 x 28; 40 x 14: " << computed_paper.value << " at " << computed_paper.x << "); measured "
-            << measured.value << " at " << measured.x << " -> " << 100 * (computed.value / measured.value - 1)
-            << "% (40 x 14: " << 100 * (computed_paper.value / measured.value - 1)
+            << " (80 x 56; 80 x 28: " << computed_28.value << " at " << computed_28.x << "; 40 x 14: "
+            << computed_paper.value << " at " << computed_paper.x << "); measured " << measured.value << " at "
+            << measured.x << " -> " << 100 * (computed.value / measured.value - 1) << "% (80 x 28: "
+            << 100 * (computed_28.value / measured.value - 1)
+            << "%, 40 x 14: " << 100 * (computed_paper.value / measured.value - 1)
             << "%); midpoint layout 80 x 28 (reported): " << computed_mid.value << " at " << computed_mid.x
             << " -> " << 100 * (computed_mid.value / measured.value - 1) << "%\n";
   // Reported, not checked: the reference paper's written sectional force (fixed-point pressure integral,
@@ -106,7 +113,7 @@ TEST_CASE("Delft 372 Fn 0.75: peak heave against the tank", "[validation][delft3
             << mean_error(rao_pressure, true) << "\n";
   constexpr double kPeakTol = 0.15, kLambdaTol = 0.10;  // issue 4, item 4
   CHECK(std::fabs(computed.x - measured.x) < kLambdaTol * measured.x);
-  CHECK_NOFAIL(std::fabs(computed.value - measured.value) < kPeakTol * measured.value);  // reported miss
+  CHECK(std::fabs(computed.value - measured.value) < kPeakTol * measured.value);
   // Away from the peak the curve must follow the data: at λ/L = 1.0 (short waves) the computed heave is
   // within 0.15 (absolute, 6% of the measured peak) of the measured one. Whole-curve sanity, not the
   // acceptance.
