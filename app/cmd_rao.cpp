@@ -57,18 +57,7 @@ void RunRao(const std::string& config_file, const std::string& out_dir) {
   const sk::StripKernelBuilder builder = kernel_kind == "impulsive"
                                              ? sk::StripKernelBuilder(sk::FillImpulsiveStripKernel)
                                              : sk::TransientGreenKernelBuilder(sc.Force());
-  sk::RaoSolverOptions o;
-  o.sections = sc.sections;
-  o.panels = sc.panels;
-  o.interaction = sc.interaction;
-  o.layout = sc.Layout();
-  o.method = sc.method == "strip_theory_stf" ? sk::RaoSolverOptions::Method::kStripTheory
-                                             : sk::RaoSolverOptions::Method::kTimeDomainStrip;
-  o.path = sc.path == "periodic" ? sk::RaoSolverOptions::Path::kPeriodic
-                                 : sk::RaoSolverOptions::Path::kTimeMarching;
-  o.motion.damping_cs = sc.cs;
-  o.motion.hull_name = hull_name;
-  o.marching.hydrodynamic_fraction = sc.hydrodynamic_fraction;
+  const sk::RaoSolverOptions o = io::RaoOptions(sc, hull_name, sc.cs);
   const auto omega = sk::WaveFrequencies(sc.frequencies, U, water.g_m_s2, hs.L_m);
   sk::RaoTable t;
   try {

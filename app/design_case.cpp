@@ -11,21 +11,7 @@
 namespace hullopt::app {
 namespace {
 
-sk::RaoSolverOptions SolverOptions(const DesignCase& d, double cs) {
-  sk::RaoSolverOptions o;
-  o.sections = d.solver.sections;
-  o.panels = d.solver.panels;
-  o.interaction = d.solver.interaction;
-  o.layout = d.solver.Layout();
-  o.method = d.solver.method == "strip_theory_stf" ? sk::RaoSolverOptions::Method::kStripTheory
-                                                   : sk::RaoSolverOptions::Method::kTimeDomainStrip;
-  o.path = d.solver.path == "periodic" ? sk::RaoSolverOptions::Path::kPeriodic
-                                       : sk::RaoSolverOptions::Path::kTimeMarching;
-  o.motion.damping_cs = cs;
-  o.motion.hull_name = d.name;
-  o.marching.hydrodynamic_fraction = d.solver.hydrodynamic_fraction;
-  return o;
-}
+sk::RaoSolverOptions SolverOptions(const DesignCase& d, double cs) { return io::RaoOptions(d.solver, d.name, cs); }
 
 template <class F>
 auto Guard(const DesignCase& d, F&& f) -> decltype(f()) {

@@ -74,6 +74,21 @@ SolverConfig ParseSolverConfig(YamlMap& s, bool frequencies_required) {
   return c;
 }
 
+sk::RaoSolverOptions RaoOptions(const SolverConfig& c, const std::string& hull_name, double cs) {
+  sk::RaoSolverOptions o;
+  o.sections = c.sections;
+  o.panels = c.panels;
+  o.interaction = c.interaction;
+  o.layout = c.Layout();
+  o.method = c.method == "strip_theory_stf" ? sk::RaoSolverOptions::Method::kStripTheory
+                                            : sk::RaoSolverOptions::Method::kTimeDomainStrip;
+  o.path = c.path == "periodic" ? sk::RaoSolverOptions::Path::kPeriodic : sk::RaoSolverOptions::Path::kTimeMarching;
+  o.motion.damping_cs = cs;
+  o.motion.hull_name = hull_name;
+  o.marching.hydrodynamic_fraction = c.hydrodynamic_fraction;
+  return o;
+}
+
 hull::MassProperties ParseMassConfig(YamlMap& m, const hull::Hydrostatics& hs) {
   hull::MassProperties p;
   p.mass_kg = m.Number("mass_kg", hs.displacement_kg);

@@ -25,6 +25,7 @@
 #include "parametric_hull/hull_form.h"
 #include "parametric_hull/hydrostatics.h"
 #include "seakeeping/frequency_list.h"
+#include "seakeeping/rao_solver.h"
 #include "seakeeping/strip_kernel.h"
 #include "seakeeping/strip_operators.h"
 
@@ -56,6 +57,10 @@ struct SolverConfig {
 /// Without frequencies_required, `frequencies` may be absent (commands that choose their own grid).
 /// Throws InputError "file:line: key 'solver.x' = v: rule".
 SolverConfig ParseSolverConfig(YamlMap& solver, bool frequencies_required = true);
+
+/// The strip-solver options the config asks for, with the hull's name for messages and the damping
+/// coefficient cs (the config's `Cs`, or a trial value of a calibration).
+sk::RaoSolverOptions RaoOptions(const SolverConfig& config, const std::string& hull_name, double cs);
 
 /// Reads `mass` with defaults from the hydrostatics (recorded in the resolved config). Throws InputError for
 /// non-positive mass or radius of gyration, or an LCG outside the hull's length.
