@@ -6,12 +6,13 @@
 #include "app/output_dir.h"
 #include "io/campaign_outputs.h"
 #include "io/input_error.h"
+#include "io/yaml_difference.h"
 
 namespace hullopt::app {
 
 CampaignJournal::CampaignJournal(const std::string& dir, const std::string& file, io::HistoryLayout layout,
-                                 const std::string& config_hash, const opt::ConstraintSet& constraints,
-                                 std::size_t quantities)
+                                 const std::string& config_hash, const YAML::Node& resolved,
+                                 const opt::ConstraintSet& constraints, std::size_t quantities)
     : dir_(dir),
       path_(OutPath(dir, file)),
       hash_path_(OutPath(dir, file + ".config_hash")),
@@ -32,12 +33,23 @@ CampaignJournal::CampaignJournal(const std::string& dir, const std::string& file
     while (!stored_hash.empty() && (stored_hash.back() == '\n' || stored_hash.back() == ' '))
       stored_hash.pop_back();
     if (stored_hash != config_hash_) {
+      // Say what changed: the earlier run's config.resolved.yaml against this one (a newer hullopt may also
+      // have added keys with their defaults).
+      std::string earlier = MpiRank() == 0 ? io::ReadTextFile(OutPath(dir, "config.resolved.yaml")) : "";
+      earlier = MpiBroadcast(earlier);
+      std::string change;
+      try {
+        if (!earlier.empty()) change = io::FirstYamlDifference(YAML::Load(earlier), resolved);
+      } catch (const YAML::Exception&) {
+        change.clear();
+      }
       throw io::InputError(path_ +
                            ": this output folder holds a campaign run with a different config (config "
                            "hash " +
                            (stored_hash.empty() ? std::string("missing") : stored_hash) + ", now " +
-                           config_hash_ + "); refusing to resume: use another --out folder, or delete " +
-                           path_ + " to start over");
+                           config_hash_ + (change.empty() ? "" : "; first difference: " + change) +
+                           "); refusing to resume: use another --out folder, or delete " + path_ +
+                           " to start over");
     }
   }
   for (const auto& row : log.rows) {

@@ -1,4 +1,5 @@
 #pragma once
+#include <yaml-cpp/yaml.h>
 // The durable log of a campaign (history.csv or samples.csv) and its resume logic: on start, rows already in
 // the file are read back (an incomplete last line from a kill is discarded) and offered for replay; rows are
 // appended and fsync'd one by one as evaluations complete; a log made with a different config is refused.
@@ -18,10 +19,11 @@ namespace hullopt::app {
 class CampaignJournal {
  public:
   /// Collective. Reads DIR/file and DIR/file.config_hash on rank 0 and shares them. Throws io::InputError if
-  /// the log exists but was made with a different config (hash of config.resolved.yaml), or is damaged.
+  /// the log exists but was made with a different config (hash of config.resolved.yaml; the message names the
+  /// first key where DIR/config.resolved.yaml of the earlier run differs from `resolved`), or is damaged.
   CampaignJournal(const std::string& dir, const std::string& file, io::HistoryLayout layout,
-                  const std::string& config_hash, const opt::ConstraintSet& constraints,
-                  std::size_t quantities);
+                  const std::string& config_hash, const YAML::Node& resolved,
+                  const opt::ConstraintSet& constraints, std::size_t quantities);
   ~CampaignJournal();
 
   /// Rank 0: opens the file for appending (dropping an incomplete last line, writing the header if new) and

@@ -52,7 +52,7 @@ void RunExplore(const ExploreCliOptions& o) {
 
   opt::ConstraintSet cs(def, evaluator.QuantityNames());
   io::HistoryLayout layout{def.VariableNames(), evaluator.SeaNames(), cs.ReportedQuantities()};
-  CampaignJournal journal(o.out, "samples.csv", layout, lc.config_hash, cs, evaluator.QuantityNames().size());
+  CampaignJournal journal(o.out, "samples.csv", layout, lc.config_hash, lc.resolved, cs, evaluator.QuantityNames().size());
   if (rank == 0) PrepareOutputDir(o.out, "explore", o.config, lc.resolved);
   journal.StartWriting();
 

@@ -70,7 +70,7 @@ void RunOptimize(const OptimizeOptions& o) {
 
   opt::ConstraintSet cs(def, evaluator.QuantityNames());
   io::HistoryLayout layout{def.VariableNames(), evaluator.SeaNames(), cs.ReportedQuantities()};
-  CampaignJournal journal(o.out, "history.csv", layout, lc.config_hash, cs, evaluator.QuantityNames().size());
+  CampaignJournal journal(o.out, "history.csv", layout, lc.config_hash, lc.resolved, cs, evaluator.QuantityNames().size());
 
   opt::NloptDriver driver(def, evaluator);
   const long per_run = def.stopping.max_evaluations + (def.polish_algorithm.empty() ? 0 : def.polish_max_evaluations);

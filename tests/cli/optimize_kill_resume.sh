@@ -74,5 +74,7 @@ grep -q "\"computed_evaluations\": 0" "$work/run/summary.json" || fail "rerun re
 sed 's/max_evaluations: 120/max_evaluations: 130/' "$work/slow.yaml" > "$work/changed.yaml"
 if "$HULLOPT" optimize "$work/changed.yaml" --out "$work/run" 2> "$work/changed.log"; then fail "changed config accepted"; fi
 grep -q "different config" "$work/changed.log" || { cat "$work/changed.log" >&2; fail "unclear message for changed config"; }
+grep -q "first difference: key 'optimize.max_evaluations': '120' before, now '130'" "$work/changed.log" ||
+  { cat "$work/changed.log" >&2; fail "the refusal does not name the changed key"; }
 [ "$(strip "$work/run/history.csv" | wc -l)" -eq $((n + 1)) ] || fail "changed config touched the history"
 echo "PASS: $n evaluations, resumed after kills with $rows_before logged rows; identical to the uninterrupted run"
