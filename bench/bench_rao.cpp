@@ -1,7 +1,8 @@
 // RAO sweep timing (issue 4, item 5): 60 frequencies, 40 sections × 14 panels, one demihull (Delft 372 at
 // Fn 0.75, the paper's transient Green-function kernel). Periodic path (2b) with 1 and 2 OpenMP threads, the
 // time-marching path (2a) on the same sweep, and the kernel build (once per hull and speed) with 1 and 2
-// threads, also with the strip steps at the cell faces (41 steps, StationLayout::kCellFaces). Run:
+// threads, also with the strip steps at the cell faces (41 steps, StationLayout::kCellFaces) and with the
+// paper's pressure form of the sectional force. Run:
 // build/bench/bench_rao (quote medians with the core count).
 #include <benchmark/benchmark.h>
 #ifdef _OPENMP
@@ -106,6 +107,19 @@ BENCHMARK(BM_KernelBuildCellFaces)
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime()
     ->Iterations(1);
+
+// The reference paper's written sectional force (SectionalForce::kPressure): the extra rows of the earlier
+// potentials on each contour, on the default cell-face steps.
+void BM_KernelBuildPressureForm(benchmark::State& state) {
+  const auto& d = TheDemihull();
+  SetThreads(static_cast<int>(state.range(0)));
+  for (auto _ : state) {
+    sk::StripKernel k = d.geometry_faces;
+    sk::TransientGreenKernelBuilder(sk::SectionalForce::kPressure)(&k);
+    benchmark::DoNotOptimize(k.force.data());
+  }
+}
+BENCHMARK(BM_KernelBuildPressureForm)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(1);
 
 }  // namespace
 
