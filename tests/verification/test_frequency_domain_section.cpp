@@ -281,10 +281,20 @@ TEST_CASE("two semicircles side by side: symmetric, finite, different from twice
   CHECK(std::abs(two.far_wave_plus[1]) == Approx(std::abs(two.far_wave_minus[1])).epsilon(1e-9));
   // Interaction at 3R spacing changes the pair's coefficients by more than 5% from twice a single hull.
   CHECK(std::fabs(two.a33() / (2 * one.a33()) - 1) + std::fabs(two.b33() / (2 * one.b33()) - 1) > 0.05);
-  // Energy balance holds for the pair as well.
-  const double b_far =
-      kRho * kG * kG * (std::norm(two.far_wave_plus[1]) + std::norm(two.far_wave_minus[1])) / (2 * w * w * w);
-  CHECK(std::fabs(b_far / two.b33() - 1) <= 0.02);
+  // Energy balance holds for the pair as well, with the single body's 2% at its 56 panels per body (the
+  // mismatch is the O(1/N) panel error: 1.97% at 28 panels, too close to the limit to be a robust check).
+  constexpr double kTolEnergy = 0.02;
+  auto energy_mismatch = [&](const SectionHydrodynamics& h) {
+    const double b_far =
+        kRho * kG * kG * (std::norm(h.far_wave_plus[1]) + std::norm(h.far_wave_minus[1])) / (2 * w * w * w);
+    return std::fabs(b_far / h.b33() - 1);
+  };
+  const auto port56 = PanelSymmetricSection(SemicircleContour(kR, 4000), 56, +spacing / 2);
+  const auto stbd56 = PanelSymmetricSection(SemicircleContour(kR, 4000), 56, -spacing / 2);
+  const auto two56 = SolveSectionFrequencyDomain({port56, stbd56}, w, Options());
+  std::printf("two semicircles at 3R, nuR = 1: energy mismatch %.4f (28 panels each), %.4f (56)\n",
+              energy_mismatch(two), energy_mismatch(two56));
+  CHECK(energy_mismatch(two56) <= kTolEnergy);
 }
 
 TEST_CASE("options are validated", "[fd]") {
