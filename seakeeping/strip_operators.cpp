@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <limits>
+#include <map>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -78,6 +79,9 @@ Level ComputeLevel(const FieldSet& f, const std::vector<Panel>& src, double s, d
   out.pl *= -rho * kInv2Pi;
   return out;
 }
+
+// A lag that is a whole number of half steps, as that number (the key of shared levels).
+int HalfSteps(double lag, double dt) { return static_cast<int>(std::lround(2.0 * lag / dt)); }
 
 // Rankine normal velocities at the collocation points of f from the sources `src` (with the +1/2 self term
 // where a collocation point is a source panel's midpoint) and the Rankine part of the momentum row.
@@ -329,6 +333,15 @@ StripOperators BuildStripOperators(const std::vector<std::vector<Panel>>& panels
     if (ops.reduced_) A = ReduceColumns(A, maps[n]), mom = ReduceColumns(mom, maps[n]);
     ops.memory_[n].resize(n);
     ops.momentum_memory_[n].resize(n);
+    // Pressure form only: momentum rows of the levels by (source step, lag in half steps), shared between the
+    // momentum rows and the time-shifted rows below, whose lag intervals abut.
+    std::map<std::pair<int, int>, Eigen::RowVectorXd> momentum_level;
+    auto level_pl = [&](int k, double lag) -> const Eigen::RowVectorXd& {
+      auto it = momentum_level.find({k, HalfSteps(lag, dt)});
+      if (it != momentum_level.end()) return it->second;
+      return momentum_level[{k, HalfSteps(lag, dt)}] =
+                 reduce(ComputeLevel(f, panels_per_step[k], lag, g, rho, false), k).pl;
+    };
     for (int k = 0; k <= n; ++k) {
       // Lags of interval k seen at t_n: [max(0, t_k − dt/2), t_k + dt/2] (k < n), [t_n − dt/2, t_n] (k = n).
       double s1, s2;
@@ -341,6 +354,7 @@ StripOperators BuildStripOperators(const std::vector<std::vector<Panel>>& panels
       }
       const Level a = reduce(ComputeLevel(f, panels_per_step[k], s1, g, rho), k);
       const Level b = reduce(ComputeLevel(f, panels_per_step[k], s2, g, rho), k);
+      if (pressure) momentum_level[{k, HalfSteps(s1, dt)}] = a.pl, momentum_level[{k, HalfSteps(s2, dt)}] = b.pl;
       if (k == n) {
         A -= b.nv - a.nv;
         mom += b.pl - a.pl;
@@ -366,11 +380,7 @@ StripOperators BuildStripOperators(const std::vector<std::vector<Panel>>& panels
           s1 = (p - k - 0.5) * dt;
           s2 = k == 0 ? p * dt : (p - k + 0.5) * dt;
         }
-        if (!(k == p && p == 0)) {  // step 0 alone has no memory at t_0
-          const Level a = reduce(ComputeLevel(f, panels_per_step[k], s1, g, rho, false), k);
-          const Level b = reduce(ComputeLevel(f, panels_per_step[k], s2, g, rho, false), k);
-          row += b.pl - a.pl;
-        }
+        if (!(k == p && p == 0)) row += level_pl(k, s2) - level_pl(k, s1);  // step 0 has no memory at t_0
         rows[k] = row;
       }
     }
