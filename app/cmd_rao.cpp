@@ -15,6 +15,7 @@
 #include "io/speed_config.h"
 #include "io/water_config.h"
 #include "io/yaml_map.h"
+#include "optimizer/rao_peak.h"
 #include "parametric_hull/hydrostatics.h"
 #include "seakeeping/impulsive_strip_kernel.h"
 #include "seakeeping/rao_solver.h"
@@ -84,6 +85,18 @@ void RunRao(const std::string& config_file, const std::string& out_dir) {
   const std::string curve =
       sc.method == "strip_theory_stf" ? "strip theory (STF type)" : "time-domain strip (" + kernel_kind + ")";
   io::WriteSvg(io::RaoFigure({t}, {curve}, hs.L_m, "RAOs: " + fn.str()), OutPath(out_dir, "rao.svg"));
+  // One line for the console: where the heave and pitch peaks are (parabola through the largest sample).
+  std::vector<double> lam, heave, pitch;
+  for (std::size_t i = 0; i < t.omega_rad_s.size(); ++i) {
+    lam.push_back(2 * M_PI * water.g_m_s2 / (t.omega_rad_s[i] * t.omega_rad_s[i]) / hs.L_m);
+    heave.push_back(std::abs(t.heave[i]));
+    pitch.push_back(std::abs(t.pitch[i]));
+  }
+  const auto h = opt::InterpolatedPeak(lam, heave), p = opt::InterpolatedPeak(lam, pitch);
+  auto edge = [](const opt::RaoPeak& r) { return r.at_edge ? " (at the end of the range)" : ""; };
+  std::printf("hull '%s': heave peak %.4g m/m at lambda/L %.3g%s, pitch peak %.4g rad/rad at lambda/L %.3g%s; "
+              "wrote rao.csv, rao.svg in %s\n",
+              hull_name.c_str(), h.value, h.x, edge(h), p.value, p.x, edge(p), out_dir.c_str());
 }
 
 }  // namespace
