@@ -50,6 +50,14 @@ std::vector<std::vector<Panel>> ChangingStrip(int steps) {
   }
   return out;
 }
+// Random normal velocities at every step's collocation points (inputs for kernel-against-marcher checks).
+std::vector<Eigen::VectorXd> RandomVelocities(const std::vector<std::vector<Panel>>& panels, std::mt19937& rng,
+                                              std::normal_distribution<double>& normal) {
+  std::vector<Eigen::VectorXd> V(panels.size());
+  for (std::size_t n = 0; n < panels.size(); ++n)
+    V[n] = Eigen::VectorXd::NullaryExpr(panels[n].size(), [&] { return normal(rng); });
+  return V;
+}
 }  // namespace
 
 TEST_CASE("impulsive added mass of a semicircle converges to rho pi R^2 / 2", "[td][verification]") {
@@ -88,9 +96,7 @@ TEST_CASE("strip kernel reproduces the marching solver for changing sections and
   std::mt19937 rng(7);
   std::normal_distribution<double> normal;
   for (int trial = 0; trial < 2; ++trial) {
-    std::vector<Eigen::VectorXd> V(N);
-    for (int n = 0; n < N; ++n)
-      V[n] = Eigen::VectorXd::NullaryExpr(panels[n].size(), [&] { return normal(rng); });
+    const std::vector<Eigen::VectorXd> V = RandomVelocities(panels, rng, normal);
     StripMarcher marcher(ops);
     for (int n = 0; n < N; ++n) {
       const double f_march = marcher.Advance(V[n]);
@@ -387,8 +393,7 @@ TEST_CASE("pressure-form sectional force: strip kernel reproduces the marching s
   const StripKernel Km = BuildStripKernel(panels, x, dt, kRho, kG, StripOperatorOptions{});
   std::mt19937 rng(11);
   std::normal_distribution<double> normal;
-  std::vector<Eigen::VectorXd> V(N);
-  for (int n = 0; n < N; ++n) V[n] = Eigen::VectorXd::NullaryExpr(panels[n].size(), [&] { return normal(rng); });
+  const std::vector<Eigen::VectorXd> V = RandomVelocities(panels, rng, normal);
   StripMarcher marcher(ops);
   double differs = 0;  // the two forms must differ where the sections change (else the option does nothing)
   for (int n = 0; n < N; ++n) {
