@@ -37,7 +37,7 @@
 #include "io/rao_table_csv.h"
 #include "io/seas_config.h"
 #include "io/yaml_map.h"
-#include "seakeeping/design_evaluation.h"
+#include "seas/design_evaluation.h"
 
 namespace hullopt::app {
 namespace {

@@ -17,8 +17,8 @@
 #include "io/yaml_map.h"
 #include "optimizer/rao_peak.h"
 #include "parametric_hull/hydrostatics.h"
-#include "seakeeping/impulsive_strip_kernel.h"
-#include "seakeeping/rao_solver.h"
+#include "seakeeping/strip/impulsive_strip_kernel.h"
+#include "seakeeping/motions/rao_solver.h"
 
 namespace hullopt::app {
 namespace {

@@ -12,12 +12,12 @@
 #include "app/commands.h"
 #include "app/output_dir.h"
 #include "io/input_error.h"
-#include "seakeeping/td_heave_coefficients.h"
+#include "seakeeping/strip/td_heave_coefficients.h"
 #include "io/section_config.h"
 #include "io/svg_plot.h"
 #include "io/yaml_map.h"
-#include "seakeeping/frequency_domain_section.h"
-#include "seakeeping/section_strip.h"
+#include "seakeeping/sections/frequency_domain_section.h"
+#include "seakeeping/sections/section_strip.h"
 
 namespace hullopt::app {
 namespace {

@@ -5,8 +5,8 @@
 
 #include "io/input_error.h"
 #include "io/speed_config.h"
-#include "seakeeping/head_sea_ship_model.h"
-#include "seakeeping/periodic_motion_solver.h"
+#include "seakeeping/motions/head_sea_ship_model.h"
+#include "seakeeping/motions/periodic_motion_solver.h"
 
 namespace hullopt::app {
 namespace {

@@ -7,7 +7,7 @@
 #include "io/input_error.h"
 #include "io/seas_config.h"
 #include "io/speed_config.h"
-#include "seakeeping/design_evaluation.h"
+#include "seas/design_evaluation.h"
 
 namespace hullopt::app {
 namespace {

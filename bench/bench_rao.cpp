@@ -11,13 +11,13 @@
 
 #include <cmath>
 
-#include "seakeeping/frequency_list.h"
-#include "seakeeping/head_sea_ship_model.h"
-#include "seakeeping/periodic_motion_solver.h"
-#include "seakeeping/rao_solver.h"
-#include "seakeeping/strip_force_model.h"
-#include "seakeeping/strip_geometry.h"
-#include "seakeeping/time_marching_motion.h"
+#include "seakeeping/motions/frequency_list.h"
+#include "seakeeping/motions/head_sea_ship_model.h"
+#include "seakeeping/motions/periodic_motion_solver.h"
+#include "seakeeping/motions/rao_solver.h"
+#include "seakeeping/strip/strip_force_model.h"
+#include "seakeeping/strip/strip_geometry.h"
+#include "seakeeping/motions/time_marching_motion.h"
 #include "tests/support/delft372_hull.h"
 
 namespace sk = hullopt::sk;

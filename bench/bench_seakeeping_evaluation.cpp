@@ -5,9 +5,9 @@
 #include <complex>
 #include <vector>
 
-#include "seakeeping/design_evaluation.h"
-#include "seakeeping/encounter_frequency.h"
-#include "seakeeping/sea_state_line.h"
+#include "seas/design_evaluation.h"
+#include "seakeeping/motions/encounter_frequency.h"
+#include "seas/sea_state_line.h"
 
 namespace sk = hullopt::sk;
 

@@ -5,10 +5,10 @@
 #include <cmath>
 #include <vector>
 
-#include "seakeeping/section_shapes.h"
-#include "seakeeping/strip_kernel_builder.h"
-#include "seakeeping/strip_operators.h"
-#include "seakeeping/transient_green.h"
+#include "seakeeping/sections/section_shapes.h"
+#include "seakeeping/strip/strip_kernel_builder.h"
+#include "seakeeping/strip/strip_operators.h"
+#include "seakeeping/green/transient_green.h"
 
 using namespace hullopt::sk;
 

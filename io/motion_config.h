@@ -24,10 +24,10 @@
 #include "io/yaml_map.h"
 #include "parametric_hull/hull_form.h"
 #include "parametric_hull/hydrostatics.h"
-#include "seakeeping/frequency_list.h"
-#include "seakeeping/rao_solver.h"
-#include "seakeeping/strip_kernel.h"
-#include "seakeeping/strip_operators.h"
+#include "seakeeping/motions/frequency_list.h"
+#include "seakeeping/motions/rao_solver.h"
+#include "seakeeping/strip/strip_kernel.h"
+#include "seakeeping/strip/strip_operators.h"
 
 namespace hullopt::io {
 

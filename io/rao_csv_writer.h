@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "seakeeping/rao_table.h"
+#include "seakeeping/motions/rao_table.h"
 
 namespace hullopt::io {
 

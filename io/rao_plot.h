@@ -5,7 +5,7 @@
 #include <vector>
 
 #include "io/svg_plot.h"
-#include "seakeeping/rao_table.h"
+#include "seakeeping/motions/rao_table.h"
 
 namespace hullopt::io {
 

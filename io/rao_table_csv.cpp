@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "io/input_error.h"
-#include "seakeeping/rao_interpolation.h"
+#include "seakeeping/motions/rao_interpolation.h"
 
 namespace hullopt::io {
 namespace {

@@ -6,7 +6,7 @@
 // ω_e = ω + ω²U/g and must be the same on every row.
 #include <string>
 
-#include "seakeeping/rao_table.h"
+#include "seakeeping/motions/rao_table.h"
 
 namespace hullopt::io {
 

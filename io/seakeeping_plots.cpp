@@ -5,7 +5,7 @@
 #include <cmath>
 #include <cstdio>
 
-#include "seakeeping/point_response.h"
+#include "seas/point_response.h"
 
 namespace hullopt::io {
 namespace {

@@ -8,7 +8,7 @@
 
 #include "io/evaluated_design.h"
 #include "io/svg_plot.h"
-#include "seakeeping/wave_spectrum.h"
+#include "seas/wave_spectrum.h"
 
 namespace hullopt::io {
 

@@ -3,7 +3,7 @@
 #include <set>
 #include <string>
 
-#include "seakeeping/sea_state_line.h"
+#include "seas/sea_state_line.h"
 
 namespace hullopt::io {
 namespace {

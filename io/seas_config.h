@@ -16,9 +16,9 @@
 #include <vector>
 
 #include "io/yaml_map.h"
-#include "seakeeping/motion_sickness.h"
-#include "seakeeping/passenger_positions.h"
-#include "seakeeping/wave_spectrum.h"
+#include "seas/motion_sickness.h"
+#include "seas/passenger_positions.h"
+#include "seas/wave_spectrum.h"
 
 namespace hullopt::io {
 

@@ -16,7 +16,7 @@
 #include <vector>
 
 #include "io/yaml_map.h"
-#include "seakeeping/section_strip.h"
+#include "seakeeping/sections/section_strip.h"
 
 namespace hullopt::io {
 

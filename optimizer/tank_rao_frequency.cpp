@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "seakeeping/encounter_frequency.h"
+#include "seakeeping/motions/encounter_frequency.h"
 
 namespace hullopt::opt {
 namespace {

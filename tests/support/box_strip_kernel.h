@@ -14,7 +14,7 @@
 #include <cmath>
 #include <vector>
 
-#include "seakeeping/strip_kernel.h"
+#include "seakeeping/strip/strip_kernel.h"
 
 namespace hullopt::testing {
 

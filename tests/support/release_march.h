@@ -7,9 +7,9 @@
 #include <cmath>
 #include <vector>
 
-#include "seakeeping/panel.h"
-#include "seakeeping/strip_marcher.h"
-#include "seakeeping/strip_operators.h"
+#include "seakeeping/green/panel.h"
+#include "seakeeping/strip/strip_marcher.h"
+#include "seakeeping/strip/strip_operators.h"
 
 namespace hullopt::testing {
 

@@ -12,8 +12,8 @@
 #include "io/input_error.h"
 #include "io/rao_table_csv.h"
 #include "io/seakeeping_plots.h"
-#include "seakeeping/design_evaluation.h"
-#include "seakeeping/encounter_frequency.h"
+#include "seas/design_evaluation.h"
+#include "seakeeping/motions/encounter_frequency.h"
 
 namespace io = hullopt::io;
 namespace sk = hullopt::sk;

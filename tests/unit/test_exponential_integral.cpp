@@ -4,7 +4,7 @@
 #include <catch2/catch.hpp>
 #include <complex>
 
-#include "seakeeping/exponential_integral.h"
+#include "seakeeping/green/exponential_integral.h"
 
 using C = std::complex<double>;
 using hullopt::sk::ExpIntE1;

@@ -5,7 +5,7 @@
 #include <stdexcept>
 #include <vector>
 
-#include "seakeeping/free_decay.h"
+#include "support/free_decay.h"
 
 TEST_CASE("free decay of a constant-coefficient oscillator", "[free_decay]") {
   // The Fourier integral is cut at 4× the last frequency (50 rad/s) where b33 is dropped: the neglected tail

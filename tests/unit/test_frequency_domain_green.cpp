@@ -5,7 +5,7 @@
 #include <cmath>
 #include <complex>
 
-#include "seakeeping/frequency_domain_green.h"
+#include "seakeeping/green/frequency_domain_green.h"
 
 using C = std::complex<double>;
 using hullopt::sk::PulsatingSourceGreen;

@@ -3,8 +3,8 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 
-#include "seakeeping/frequency_list.h"
-#include "seakeeping/head_sea_wave.h"
+#include "seakeeping/motions/frequency_list.h"
+#include "seakeeping/motions/head_sea_wave.h"
 
 namespace sk = hullopt::sk;
 

@@ -3,8 +3,8 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 
-#include "seakeeping/impulsive_strip_kernel.h"
-#include "seakeeping/section_shapes.h"
+#include "seakeeping/strip/impulsive_strip_kernel.h"
+#include "seakeeping/sections/section_shapes.h"
 
 namespace sk = hullopt::sk;
 

@@ -4,8 +4,8 @@
 #include <cmath>
 #include <string>
 
-#include "seakeeping/iso2631_weighting.h"
-#include "seakeeping/motion_sickness.h"
+#include "seas/iso2631_weighting.h"
+#include "seas/motion_sickness.h"
 
 using namespace hullopt::sk;
 

@@ -2,7 +2,7 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 
-#include "seakeeping/panel.h"
+#include "seakeeping/green/panel.h"
 
 TEST_CASE("semicircle panelling: normals point out of the body, ends on the waterline", "[panel]") {
   std::vector<std::array<double, 2>> half;

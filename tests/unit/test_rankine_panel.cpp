@@ -3,7 +3,7 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 
-#include "seakeeping/rankine_panel.h"
+#include "seakeeping/green/rankine_panel.h"
 
 using hullopt::sk::Panel;
 

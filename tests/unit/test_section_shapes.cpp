@@ -3,7 +3,7 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 
-#include "seakeeping/section_shapes.h"
+#include "seakeeping/sections/section_shapes.h"
 
 namespace {
 double HalfArea(const hullopt::sk::HalfContour& c) {  // ∫ y dz by the trapezoid rule

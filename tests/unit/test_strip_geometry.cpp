@@ -4,11 +4,11 @@
 #include <cmath>
 
 #include "parametric_hull/hydrostatics.h"
-#include "seakeeping/head_sea_ship_model.h"
-#include "seakeeping/impulsive_strip_kernel.h"
-#include "seakeeping/periodic_motion_solver.h"
-#include "seakeeping/rao_solver.h"
-#include "seakeeping/strip_geometry.h"
+#include "seakeeping/motions/head_sea_ship_model.h"
+#include "seakeeping/strip/impulsive_strip_kernel.h"
+#include "seakeeping/motions/periodic_motion_solver.h"
+#include "seakeeping/motions/rao_solver.h"
+#include "seakeeping/strip/strip_geometry.h"
 #include "support/box_strip_kernel.h"
 
 namespace sk = hullopt::sk;

@@ -3,11 +3,11 @@
 #include <stdexcept>
 #include <string>
 
-#include "seakeeping/section_shapes.h"
-#include "seakeeping/strip_kernel_builder.h"
-#include "seakeeping/strip_marcher.h"
-#include "seakeeping/strip_operators.h"
-#include "seakeeping/td_heave_coefficients.h"
+#include "seakeeping/sections/section_shapes.h"
+#include "seakeeping/strip/strip_kernel_builder.h"
+#include "seakeeping/strip/strip_marcher.h"
+#include "seakeeping/strip/strip_operators.h"
+#include "seakeeping/strip/td_heave_coefficients.h"
 
 using namespace hullopt::sk;
 

@@ -7,7 +7,7 @@
 #include <complex>
 #include <stdexcept>
 
-#include "seakeeping/transient_green.h"
+#include "seakeeping/green/transient_green.h"
 
 namespace {
 using cd = std::complex<double>;

@@ -4,8 +4,8 @@
 #include <cmath>
 #include <string>
 
-#include "seakeeping/sea_state_line.h"
-#include "seakeeping/wave_spectrum.h"
+#include "seas/sea_state_line.h"
+#include "seas/wave_spectrum.h"
 
 using namespace hullopt::sk;
 

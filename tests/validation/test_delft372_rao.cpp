@@ -22,8 +22,8 @@
 #include "io/rao_plot.h"
 #include "io/tank_rao_reader.h"
 #include "optimizer/rao_peak.h"
-#include "seakeeping/frequency_list.h"
-#include "seakeeping/rao_solver.h"
+#include "seakeeping/motions/frequency_list.h"
+#include "seakeeping/motions/rao_solver.h"
 #include "support/delft372_hull.h"
 
 namespace sk = hullopt::sk;

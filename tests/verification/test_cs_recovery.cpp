@@ -11,9 +11,9 @@
 
 #include "optimizer/synthetic_oscillator_rao.h"
 #include "optimizer/tank_rao_frequency.h"
-#include "seakeeping/head_sea_ship_model.h"
-#include "seakeeping/periodic_motion_solver.h"
-#include "seakeeping/rao_solver.h"
+#include "seakeeping/motions/head_sea_ship_model.h"
+#include "seakeeping/motions/periodic_motion_solver.h"
+#include "seakeeping/motions/rao_solver.h"
 #include "support/delft372_hull.h"
 #include "verification/cs_recovery_check.h"
 

@@ -3,9 +3,9 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 
-#include "seakeeping/encounter_frequency.h"
-#include "seakeeping/point_response.h"
-#include "seakeeping/wave_spectrum.h"
+#include "seakeeping/motions/encounter_frequency.h"
+#include "seas/point_response.h"
+#include "seas/wave_spectrum.h"
 
 using namespace hullopt::sk;
 

@@ -17,9 +17,9 @@
 #include <complex>
 #include <cstdio>
 
-#include "seakeeping/frequency_domain_green.h"
-#include "seakeeping/frequency_domain_section.h"
-#include "seakeeping/section_shapes.h"
+#include "seakeeping/green/frequency_domain_green.h"
+#include "seakeeping/sections/frequency_domain_section.h"
+#include "seakeeping/sections/section_shapes.h"
 
 using namespace hullopt::sk;
 using C = std::complex<double>;

@@ -6,10 +6,10 @@
 #include <cmath>
 #include <complex>
 
-#include "seakeeping/encounter_frequency.h"
-#include "seakeeping/irregular_sea.h"
-#include "seakeeping/passenger_positions.h"
-#include "seakeeping/point_response.h"
+#include "seakeeping/motions/encounter_frequency.h"
+#include "seas/irregular_sea.h"
+#include "seas/passenger_positions.h"
+#include "seas/point_response.h"
 
 using namespace hullopt::sk;
 using cd = std::complex<double>;

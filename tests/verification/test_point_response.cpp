@@ -6,9 +6,9 @@
 #include <complex>
 #include <string>
 
-#include "seakeeping/design_evaluation.h"
-#include "seakeeping/encounter_frequency.h"
-#include "seakeeping/point_response.h"
+#include "seas/design_evaluation.h"
+#include "seakeeping/motions/encounter_frequency.h"
+#include "seas/point_response.h"
 
 using namespace hullopt::sk;
 using cd = std::complex<double>;

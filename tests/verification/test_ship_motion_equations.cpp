@@ -7,12 +7,12 @@
 #include <functional>
 #include <limits>
 
-#include "seakeeping/head_sea_ship_model.h"
-#include "seakeeping/head_sea_wave.h"
-#include "seakeeping/periodic_motion_solver.h"
-#include "seakeeping/strip_force_model.h"
-#include "seakeeping/strip_theory_stf.h"
-#include "seakeeping/time_marching_motion.h"
+#include "seakeeping/motions/head_sea_ship_model.h"
+#include "seakeeping/motions/head_sea_wave.h"
+#include "seakeeping/motions/periodic_motion_solver.h"
+#include "seakeeping/strip/strip_force_model.h"
+#include "seakeeping/motions/strip_theory_stf.h"
+#include "seakeeping/motions/time_marching_motion.h"
 #include "support/box_strip_kernel.h"
 
 namespace sk = hullopt::sk;

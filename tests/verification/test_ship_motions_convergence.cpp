@@ -18,8 +18,8 @@
 #include "io/water_config.h"
 #include "io/yaml_map.h"
 #include "parametric_hull/hydrostatics.h"
-#include "seakeeping/frequency_list.h"
-#include "seakeeping/rao_solver.h"
+#include "seakeeping/motions/frequency_list.h"
+#include "seakeeping/motions/rao_solver.h"
 #include "support/delft372_hull.h"
 
 namespace sk = hullopt::sk;

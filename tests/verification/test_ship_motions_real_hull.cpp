@@ -6,13 +6,13 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 
-#include "seakeeping/frequency_list.h"
-#include "seakeeping/head_sea_ship_model.h"
-#include "seakeeping/impulsive_strip_kernel.h"
-#include "seakeeping/periodic_motion_solver.h"
-#include "seakeeping/strip_force_model.h"
-#include "seakeeping/strip_geometry.h"
-#include "seakeeping/time_marching_motion.h"
+#include "seakeeping/motions/frequency_list.h"
+#include "seakeeping/motions/head_sea_ship_model.h"
+#include "seakeeping/strip/impulsive_strip_kernel.h"
+#include "seakeeping/motions/periodic_motion_solver.h"
+#include "seakeeping/strip/strip_force_model.h"
+#include "seakeeping/strip/strip_geometry.h"
+#include "seakeeping/motions/time_marching_motion.h"
 #include "support/delft372_hull.h"
 
 namespace sk = hullopt::sk;

@@ -6,10 +6,10 @@
 // plate; the estimate must grow without bound as the plate thins at fixed panel count.
 #include <catch2/catch.hpp>
 
-#include "seakeeping/section_shapes.h"
-#include "seakeeping/strip_kernel.h"
-#include "seakeeping/strip_kernel_builder.h"
-#include "seakeeping/strip_operators.h"
+#include "seakeeping/sections/section_shapes.h"
+#include "seakeeping/strip/strip_kernel.h"
+#include "seakeeping/strip/strip_kernel_builder.h"
+#include "seakeeping/strip/strip_operators.h"
 
 using namespace hullopt::sk;
 

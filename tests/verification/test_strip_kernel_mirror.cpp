@@ -7,10 +7,10 @@
 #include <random>
 #include <vector>
 
-#include "seakeeping/panel.h"
-#include "seakeeping/section_shapes.h"
-#include "seakeeping/strip_kernel_builder.h"
-#include "seakeeping/strip_operators.h"
+#include "seakeeping/green/panel.h"
+#include "seakeeping/sections/section_shapes.h"
+#include "seakeeping/strip/strip_kernel_builder.h"
+#include "seakeeping/strip/strip_operators.h"
 
 using namespace hullopt::sk;
 

@@ -4,11 +4,11 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 
-#include "seakeeping/frequency_domain_section.h"
-#include "seakeeping/head_sea_ship_model.h"
-#include "seakeeping/section_shapes.h"
-#include "seakeeping/strip_geometry.h"
-#include "seakeeping/strip_theory_stf.h"
+#include "seakeeping/sections/frequency_domain_section.h"
+#include "seakeeping/motions/head_sea_ship_model.h"
+#include "seakeeping/sections/section_shapes.h"
+#include "seakeeping/strip/strip_geometry.h"
+#include "seakeeping/motions/strip_theory_stf.h"
 #include "support/delft372_hull.h"
 
 namespace sk = hullopt::sk;

@@ -15,12 +15,12 @@
 #include <cstdio>
 #include <vector>
 
-#include "seakeeping/free_decay.h"
-#include "seakeeping/frequency_domain_section.h"
-#include "seakeeping/section_shapes.h"
-#include "seakeeping/strip_marcher.h"
-#include "seakeeping/strip_operators.h"
-#include "seakeeping/td_heave_coefficients.h"
+#include "support/free_decay.h"
+#include "seakeeping/sections/frequency_domain_section.h"
+#include "seakeeping/sections/section_shapes.h"
+#include "seakeeping/strip/strip_marcher.h"
+#include "seakeeping/strip/strip_operators.h"
+#include "seakeeping/strip/td_heave_coefficients.h"
 
 using namespace hullopt::sk;
 namespace {

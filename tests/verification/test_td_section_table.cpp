@@ -10,9 +10,9 @@
 #include <string>
 #include <vector>
 
-#include "seakeeping/panel.h"
-#include "seakeeping/section_shapes.h"
-#include "seakeeping/td_heave_coefficients.h"
+#include "seakeeping/green/panel.h"
+#include "seakeeping/sections/section_shapes.h"
+#include "seakeeping/strip/td_heave_coefficients.h"
 
 using namespace hullopt::sk;
 

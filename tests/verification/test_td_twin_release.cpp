@@ -16,11 +16,11 @@
 #include <cmath>
 #include <vector>
 
-#include "seakeeping/free_decay.h"
-#include "seakeeping/frequency_domain_section.h"
-#include "seakeeping/panel.h"
-#include "seakeeping/section_shapes.h"
-#include "seakeeping/strip_operators.h"
+#include "support/free_decay.h"
+#include "seakeeping/sections/frequency_domain_section.h"
+#include "seakeeping/green/panel.h"
+#include "seakeeping/sections/section_shapes.h"
+#include "seakeeping/strip/strip_operators.h"
 #include "support/release_march.h"
 
 using namespace hullopt::sk;

@@ -13,15 +13,15 @@
 // Compiles to a skipped placeholder until the frequency-domain solver is merged.
 #include <catch2/catch.hpp>
 
-#if __has_include("seakeeping/frequency_domain_section.h")
+#if __has_include("seakeeping/sections/frequency_domain_section.h")
 #include <algorithm>
 #include <cmath>
 #include <string>
 #include <vector>
 
-#include "seakeeping/frequency_domain_section.h"
-#include "seakeeping/section_shapes.h"
-#include "seakeeping/td_heave_coefficients.h"
+#include "seakeeping/sections/frequency_domain_section.h"
+#include "seakeeping/sections/section_shapes.h"
+#include "seakeeping/strip/td_heave_coefficients.h"
 
 using namespace hullopt::sk;
 

@@ -11,9 +11,9 @@
 #include <complex>
 #include <vector>
 
-#include "seakeeping/gauss_legendre.h"
-#include "seakeeping/memory_influence.h"
-#include "seakeeping/transient_green.h"
+#include "seakeeping/green/gauss_legendre.h"
+#include "seakeeping/green/memory_influence.h"
+#include "seakeeping/green/transient_green.h"
 
 namespace {
 using cd = std::complex<double>;

@@ -1,0 +1,34 @@
+#include "seakeeping/green/frequency_domain_green.h"
+
+#include <cmath>
+
+#include "seakeeping/green/exponential_integral.h"
+
+namespace hullopt::sk {
+
+WaveGreenValue SmoothWaveGreen(double nu, double Y, double Z) {
+  using C = std::complex<double>;
+  const double ay = std::fabs(Y);  // +0.0 for Y = 0: E1 taken on the upper side of its cut
+  const C w(nu * Z, nu * ay);      // ν ζc
+  const C rad = C(0.0, 2.0 * M_PI) * std::exp(C(nu * Z, -nu * ay));  // 2πi e^{ν conj ζc}
+  WaveGreenValue out;
+  out.value = 2.0 * std::log(nu) - 2.0 * ScaledExpIntE1PlusLog(w).real() + rad;
+  // d g(νζc)/dζc = ν e^w E1(w): only log-singular at ζc = 0 (the ln ζc of g cancels the −1/ζc of e^w E1).
+  const C f = nu * ScaledExpIntE1(w);
+  out.dz = -2.0 * f.real() + nu * rad;
+  const C d_abs_y = 2.0 * f.imag() - C(0.0, nu) * rad;  // ∂/∂|Y|: Re(i f) = −Im f
+  out.dy = (Y >= 0 ? 1.0 : -1.0) * d_abs_y;
+  return out;
+}
+
+WaveGreenValue PulsatingSourceGreen(double nu, double y, double z, double eta, double zeta) {
+  WaveGreenValue out = SmoothWaveGreen(nu, y - eta, z + zeta);
+  const double Y = y - eta, Zm = z - zeta, Zp = z + zeta;
+  const double r2 = Y * Y + Zm * Zm, rp2 = Y * Y + Zp * Zp;
+  out.value += 0.5 * std::log(r2) + 0.5 * std::log(rp2);
+  out.dy += Y / r2 + Y / rp2;
+  out.dz += Zm / r2 + Zp / rp2;
+  return out;
+}
+
+}  // namespace hullopt::sk

@@ -1,0 +1,306 @@
+#include "seakeeping/green/transient_green.h"
+
+#include <array>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "seakeeping/green/cerf_wrap.h"
+#include "seakeeping/green/gauss_legendre.h"
+
+namespace hullopt::sk {
+namespace {
+
+using cd = std::complex<double>;
+constexpr cd kI(0.0, 1.0);
+const double kSqrtPi = std::sqrt(M_PI);
+
+// |x| from which the asymptotic series replaces the closed forms. With 30 terms the truncation error of the
+// algebraic series at |x| = 6 is ~1e−15 relative (the terms fall as Π(2k−1)/(2|x|²)), while the closed forms
+// of H_t and H' lose ~ε·2|x|² and ~ε·2|x|⁴ there.
+constexpr double kAsymptoticRadius = 6.0;
+constexpr int kAsymptoticTerms = 30;
+// Φ by its Taylor series up to this |x|: the largest term is ~30 times the sum there (round-off ~1e−14).
+constexpr double kTaylorRadius = 2.5;
+// Gauss–Legendre points for ∫F from radius 2.5 to |x| < 6: the integrand oscillates at most ~30 rad over the
+// segment (arg x = π/4), which 40 points integrate to round-off.
+constexpr int kMidRangePoints = 40;
+// (γ + ln 4)/4: Φ(x) − ½ ln x → this constant as x → +∞.
+constexpr double kPhiConstant = (0.57721566490153286060651209 + 1.38629436111989061883446424) / 4.0;
+
+// c_n = (2n−1)!!/2^{n+1}, n = 0.. (c_0 = 1/2): the coefficients of F(x) ~ Σ c_n x^{−(2n+1)}.
+const std::array<double, kAsymptoticTerms + 1>& AsymptoticCoefficients() {
+  static const auto c = [] {
+    std::array<double, kAsymptoticTerms + 1> out{};
+    out[0] = 0.5;
+    for (int n = 1; n <= kAsymptoticTerms; ++n) out[n] = out[n - 1] * (2 * n - 1) / 2.0;
+    return out;
+  }();
+  return c;
+}
+
+void CheckArguments(double Y, double Z, double t, double g) {
+  if (!std::isfinite(Y) || !std::isfinite(Z) || !std::isfinite(t) || !std::isfinite(g))
+    throw std::invalid_argument("transient Green function: non-finite argument");
+  if (Z > 0.0)
+    throw std::invalid_argument(
+        "transient Green function: Z = z + zeta must be <= 0 (fluid below z = 0), got " + std::to_string(Z));
+  if (t < 0.0)
+    throw std::invalid_argument("transient Green function: lag t must be >= 0, got " + std::to_string(t));
+  if (!(g > 0.0)) throw std::invalid_argument("transient Green function: g must be > 0");
+  if (Y == 0.0 && Z == 0.0)
+    throw std::domain_error(
+        "transient Green function: field and source point coincide on the free surface (a = 0)");
+}
+
+// x for Y >= 0 (0 <= arg x <= π/4) and a.
+struct Arg {
+  cd a, sqrt_a, x;
+};
+Arg MakeArg(double Yabs, double Z, double t, double g) {
+  // Hot path: principal sqrt of a = |Z| − i|Y| and x = √g t / (2√a) with real arithmetic only
+  // (√a = (sqrt((r + |Z|)/2), −sqrt((r − |Z|)/2)), r = |a| = |√a|²; 1/√a = conj(√a)/r).
+  Arg out;
+  const double p = -Z, r = std::sqrt(p * p + Yabs * Yabs);
+  out.a = cd(p, -Yabs);
+  out.sqrt_a = cd(std::sqrt(0.5 * (r + p)), -std::sqrt(0.5 * std::fmax(r - p, 0.0)));
+  const double scale = std::sqrt(g) * t / (2.0 * r);
+  out.x = cd(scale * out.sqrt_a.real(), -scale * out.sqrt_a.imag());
+  return out;
+}
+
+cd ConjIf(bool c, cd v) { return c ? std::conj(v) : v; }
+
+}  // namespace
+
+cd Dawson(cd x) {
+  double fr = 0, fi = 0;
+  hullopt_cdawson(x.real(), x.imag(), &fr, &fi);
+  return {fr, fi};
+}
+
+namespace {
+
+// Φ by its Taylor series about 0 (used for |x| <= 2.5 when building the table below).
+cd DawsonIntegralTaylor(cd x) {
+  // Φ = Σ t_n/(2n+2), t_0 = x², t_{n+1} = t_n (−2x²)/(2n+3).
+  const cd x2 = x * x;
+  cd term = x2, sum = 0.0;
+  for (int n = 0; n < 200; ++n) {
+    const cd add = term / (2.0 * n + 2.0);
+    sum += add;
+    if (std::abs(add) <= 1e-18 * std::abs(sum)) break;
+    term *= -2.0 * x2 / (2.0 * n + 3.0);
+  }
+  return sum;
+}
+
+// Φ for 2.5 < |x| < 6 by Gauss–Legendre of F from radius 2.5 along the ray (table building only: ~20 µs).
+cd DawsonIntegralQuadrature(cd x) {
+  const double r = std::abs(x);
+  if (r <= kTaylorRadius) return DawsonIntegralTaylor(x);
+  const cd x0 = x * (kTaylorRadius / r);
+  const cd h = x - x0;
+  const auto& q = GaussLegendre01(kMidRangePoints);
+  cd acc = 0.0;
+  for (int k = 0; k < kMidRangePoints; ++k) acc += q.weights[k] * Dawson(x0 + q.nodes[k] * h);
+  return DawsonIntegralTaylor(x0) + acc * h;
+}
+
+// Table of Φ and F on the grid x = (i + i·j)·h, 0 <= i, j <= kGridN, covering the first quadrant of |x| < 6.
+// Between nodes Φ(x0 + δ) = Φ(x0) + Σ_k F⁽ᵏ⁾(x0) δ^{k+1}/(k+1)!, with F' = 1 − 2xF and
+// F⁽ᵏ⁺¹⁾ = −2x F⁽ᵏ⁾ − 2k F⁽ᵏ⁻¹⁾; |δ| <= 0.071 and 2|x||δ| <= 0.87, so 18 terms reach ~1e−16. The Taylor
+// coefficients c_0 = Φ(x0), c_{k+1} = F⁽ᵏ⁾(x0)/(k+1)! are stored per node, so that evaluation is Horner's rule
+// (Φ = Σ c_k δ^k, F = Φ' = Σ k c_k δ^{k−1}): this lookup is the hot spot of the strip-kernel build.
+constexpr double kGridStep = 0.1;
+constexpr int kGridN = 61;
+constexpr int kTaylorTerms = 18;
+constexpr int kCoefficients = kTaylorTerms + 2;  // c_0 .. c_{T+1}
+struct PhiTable {
+  std::vector<cd> coef;  // node-major, kCoefficients per node
+  PhiTable() : coef(static_cast<std::size_t>((kGridN + 1) * (kGridN + 1) * kCoefficients)) {
+    for (int i = 0; i <= kGridN; ++i)
+      for (int j = 0; j <= kGridN; ++j) {
+        const cd x(i * kGridStep, j * kGridStep);
+        cd* c = &coef[static_cast<std::size_t>((i * (kGridN + 1) + j) * kCoefficients)];
+        c[0] = DawsonIntegralQuadrature(x);
+        cd fk_prev = Dawson(x), fk = 1.0 - 2.0 * x * fk_prev;  // F⁽⁰⁾, F⁽¹⁾
+        double factorial = 1.0;                                // (k+1)!
+        c[1] = fk_prev;
+        for (int k = 1; k <= kTaylorTerms; ++k) {
+          factorial *= (k + 1);
+          c[k + 1] = fk / factorial;
+          const cd next = -2.0 * x * fk - 2.0 * k * fk_prev;
+          fk_prev = fk;
+          fk = next;
+        }
+      }
+  }
+};
+const PhiTable& Table() {
+  static const PhiTable table;  // thread-safe initialisation (C++11), ~0.1 s once
+  return table;
+}
+
+const cd* NodeCoefficients(cd x, cd* delta) {
+  // x is in the first quadrant: rounding by +0.5 truncation (cheaper than lround on this hot path).
+  const int i = static_cast<int>(x.real() / kGridStep + 0.5);
+  const int j = static_cast<int>(x.imag() / kGridStep + 0.5);
+  *delta = x - cd(i * kGridStep, j * kGridStep);
+  return &Table().coef[static_cast<std::size_t>((i * (kGridN + 1) + j) * kCoefficients)];
+}
+
+cd DawsonIntegralTableOnly(cd x) {
+  cd d;
+  const cd* c = NodeCoefficients(x, &d);
+  cd phi = c[kCoefficients - 1];
+  for (int k = kCoefficients - 2; k >= 0; --k) phi = phi * d + c[k];
+  return phi;
+}
+
+// Φ and F together from the table.
+struct PhiAndF {
+  cd phi, f;
+};
+PhiAndF DawsonIntegralTable(cd x) {
+  cd d;
+  const cd* c = NodeCoefficients(x, &d);
+  constexpr int M = kCoefficients - 1;
+  cd phi = c[M], f = static_cast<double>(M) * c[M];
+  for (int k = M - 1; k >= 1; --k) {
+    phi = phi * d + c[k];
+    f = f * d + static_cast<double>(k) * c[k];
+  }
+  phi = phi * d + c[0];
+  return {phi, f};
+}
+
+// Σ_{n>=1} c_n/(2n) x^{−2n}: the algebraic part of Φ − ½ ln x − (γ + ln 4)/4 (with a minus sign).
+cd PhiAlgebraicSeries(cd x) {
+  const auto& c = AsymptoticCoefficients();
+  const cd inv2 = 1.0 / (x * x);
+  cd p = inv2, series = 0.0;
+  for (int n = 1; n <= kAsymptoticTerms; ++n, p *= inv2) {
+    const cd add = c[n] / (2.0 * n) * p;
+    series += add;
+    if (std::norm(add) < 1e-34) break;  // |term| < 1e−17; terms fall monotonically until n ~ |x|² >= 36
+  }
+  return series;
+}
+
+// erfc(x) for 0 <= arg x <= π/4, |x| >= 6; |erfc(x)| <= e^{−Re x²}/(|x|√π) is below 1e−18 once Re x² > 40.
+cd ErfcFirstQuadrant(cd x) {
+  double er = 0, ei = 0;
+  if ((x * x).real() < 40.0) hullopt_cerfc(x.real(), x.imag(), &er, &ei);
+  return {er, ei};
+}
+
+// ln x without the hypot of std::log (x != 0).
+cd LogFirstQuadrant(cd x) { return {0.5 * std::log(std::norm(x)), std::atan2(x.imag(), x.real())}; }
+
+void CheckAsymptoticSector(cd x) {
+  if (x.imag() > x.real() * (1.0 + 1e-12))
+    throw std::domain_error("Dawson integral: asymptotic form needs |arg x| <= pi/4, got arg " +
+                            std::to_string(std::arg(x)));
+}
+
+}  // namespace
+
+cd DawsonIntegral(cd x) {
+  // Reduce to the first quadrant: Φ is even and real on the real axis.
+  if (x.real() < 0) x = -x;
+  const bool conj = x.imag() < 0;
+  if (conj) x = std::conj(x);
+  cd out;
+  // std::norm, not std::abs: |x|² comparisons avoid a hypot call on this hot path.
+  if (std::norm(x) < kAsymptoticRadius * kAsymptoticRadius) {
+    out = DawsonIntegralTableOnly(x);
+  } else {
+    CheckAsymptoticSector(x);
+    out = kPhiConstant + 0.5 * LogFirstQuadrant(x) - PhiAlgebraicSeries(x) - kI * (M_PI / 4.0) * ErfcFirstQuadrant(x);
+  }
+  return ConjIf(conj, out);
+}
+
+TransientGreenValues TransientGreen(double Y, double Z, double t, double g) {
+  CheckArguments(Y, Z, t, g);
+  const bool conj = Y < 0;
+  const Arg s = MakeArg(std::fabs(Y), Z, t, g);
+  const cd x = s.x;
+  const double sg = std::sqrt(g);
+  cd F, one_minus_2xF, dz_bracket;  // F, 1 − 2xF, x + (1 − 2x²)F
+  if (std::norm(x) < kAsymptoticRadius * kAsymptoticRadius) {
+    F = Dawson(x);
+    one_minus_2xF = 1.0 - 2.0 * x * F;
+    dz_bracket = x + (1.0 - 2.0 * x * x) * F;
+  } else {
+    // F ~ Σ c_n x^{−(2n+1)} + E, E = i(√π/2) e^{−x²} (Im x >= 0):
+    //   1 − 2xF ~ −Σ_{n>=1} 2 c_n x^{−2n} − 2xE,   x + (1 − 2x²)F ~ −Σ_{n>=1} 2n c_n x^{−(2n+1)} + (1 −
+    //   2x²)E.
+    const auto& c = AsymptoticCoefficients();
+    const cd E = kI * (0.5 * kSqrtPi) * std::exp(-x * x);
+    const cd inv = 1.0 / x, inv2 = inv * inv;
+    cd p = inv;  // x^{−(2n+1)}
+    cd sF = 0.0, sT = 0.0, sZ = 0.0;
+    for (int n = 0; n <= kAsymptoticTerms; ++n, p *= inv2) {
+      sF += c[n] * p;
+      if (n >= 1) {
+        sT += 2.0 * c[n] * p * x;
+        sZ += 2.0 * n * c[n] * p;
+      }
+    }
+    F = sF + E;
+    one_minus_2xF = -sT - 2.0 * x * E;
+    dz_bracket = -sZ + (1.0 - 2.0 * x * x) * E;
+  }
+  TransientGreenValues v;
+  v.h = ConjIf(conj, 4.0 * sg * F / s.sqrt_a);
+  v.h_t = ConjIf(conj, (2.0 * g / s.a) * one_minus_2xF);
+  v.h_z = ConjIf(conj, (2.0 * sg / (s.a * s.sqrt_a)) * dz_bracket);
+  return v;
+}
+
+cd TransientGreenTimeIntegral(double Y, double Z, double t, double g) {
+  CheckArguments(Y, Z, t, g);
+  const Arg s = MakeArg(std::fabs(Y), Z, t, g);
+  return ConjIf(Y < 0, 8.0 * DawsonIntegral(s.x));
+}
+
+cd TransientGreenSpaceTimeIntegral(double Y, double Z, double t, double g) {
+  CheckArguments(Y, Z, t, g);
+  if (t == 0.0) return 0.0;
+  const Arg s = MakeArg(std::fabs(Y), Z, t, g);
+  const cd x = s.x, a = s.a;
+  cd K;
+  if (std::norm(x) < kAsymptoticRadius * kAsymptoticRadius) {
+    // K = −8a(Φ + xF) + 2gt²(ln x − 2Φ + 2C): dK/da = −8Φ (F' = 1 − 2xF, dx/da = −x/2a), so dK/dζc = 8Φ.
+    // The constant 4C·gt² makes it the same function as the asymptotic form below; here gt² = 4a x² <= 144|a|,
+    // so the cancellation inside the bracket costs at most ~2 digits.
+    const PhiAndF pf = DawsonIntegralTable(x);
+    K = -8.0 * a * (pf.phi + x * pf.f) + 2.0 * g * t * t * (LogFirstQuadrant(x) - 2.0 * pf.phi + 2.0 * kPhiConstant);
+  } else {
+    // ln x − 2Φ + 2C = 2Σ c_n/(2n) x^{−2n} + i(π/2) erfc(x) with gt² = 4a x²: no gt²-sized cancellation left.
+    CheckAsymptoticSector(x);
+    const cd erfc = ErfcFirstQuadrant(x);
+    const cd series = PhiAlgebraicSeries(x);
+    const cd phi = kPhiConstant + 0.5 * LogFirstQuadrant(x) - series - kI * (M_PI / 4.0) * erfc;
+    // F ~ Σ c_n x^{−(2n+1)} + i(√π/2) e^{−x²}; xF is needed.
+    const auto& c = AsymptoticCoefficients();
+    const cd inv2 = 1.0 / (x * x);
+    cd p = 1.0, xf = 0.0;
+    for (int n = 0; n <= kAsymptoticTerms; ++n, p *= inv2) {
+      const cd add = c[n] * p;
+      xf += add;
+      if (n > 0 && std::norm(add) < 1e-34) break;
+    }
+    const cd x2 = x * x;
+    // The two e^{−x²}-sized pieces, −8a·x·i(√π/2)e^{−x²} and 4πi a x² erfc(x), cancel at leading order; both
+    // are kept (|e^{−x²}| <= 1 in this sector) and skipped together when negligible.
+    const cd exp_part = (x2.real() < 40.0) ? x * kI * (0.5 * kSqrtPi) * std::exp(-x2) : cd(0.0);
+    K = -8.0 * a * (phi + xf + exp_part) + 16.0 * a * x2 * series + 4.0 * M_PI * kI * a * x2 * erfc;
+  }
+  return ConjIf(Y < 0, K);
+}
+
+}  // namespace hullopt::sk

@@ -1,0 +1,54 @@
+#pragma once
+// One call from a hull, its mass properties and a speed to heave and pitch RAOs by the high-Froude-number
+// time-domain strip method (the paper's method): strip geometry → strip kernel (any builder: the transient
+// Green-function kernel, or the impulsive stand-in) → periodic steady state (2b) or time marching (2a).
+// Multihull bodies either share the strips (interaction) or are solved one body at a time and added.
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "parametric_hull/hull_form.h"
+#include "seakeeping/motions/head_sea_ship_model.h"
+#include "seakeeping/motions/rao_table.h"
+#include "seakeeping/strip/strip_geometry.h"
+#include "seakeeping/strip/strip_operators.h"
+#include "seakeeping/motions/time_marching_motion.h"
+
+namespace hullopt::sk {
+
+/// Fills the force rows of a kernel whose geometry is set (StripKernelGeometry).
+using StripKernelBuilder = std::function<void(StripKernel*)>;
+
+/// The paper's kernel: transient free-surface Green function strip operators reduced to force rows
+/// (BuildStripKernel of strip_kernel_builder.h) on the kernel's panels, dt, ρ and g, with the sectional force
+/// in the given form (strip_operators.h).
+StripKernelBuilder TransientGreenKernelBuilder(SectionalForce force = SectionalForce::kMomentum);
+
+struct RaoSolverOptions {
+  enum class Path { kPeriodic, kTimeMarching };
+  enum class Method { kTimeDomainStrip, kStripTheory };
+  Method method = Method::kTimeDomainStrip;  ///< strip theory: frequency-domain sections (builder unused)
+  int sections = 40;                         ///< strip steps along the hull (paper 40)
+  int panels = 14;                           ///< panels per wetted section of one body (paper 14)
+  StationLayout layout = kDefaultStationLayout;  ///< where the strip steps sit (strip_kernel.h)
+  bool interaction = true;  ///< multihull bodies share the strips; false: each body alone, forces added
+  Path path = Path::kPeriodic;
+  MotionOptions motion;      ///< Cs, hull name
+  MarchingOptions marching;  ///< time marching only
+  bool IsValid(std::string* error) const;
+};
+
+/// The strip kernel of the hull at speed U (all bodies together, or body by body without interaction and
+/// combined). Throws as StripKernelGeometry and the builder do.
+StripKernel BuildHullStripKernel(const hull::HullForm& hull, const RaoSolverOptions& options,
+                                 double speed_m_s, double rho_kg_m3, double g_m_s2,
+                                 const StripKernelBuilder& builder);
+
+/// RAOs at the wave frequencies omega_rad_s (increasing, > 0), with StripKernelWarnings in `warnings`. Throws std::invalid_argument for bad options,
+/// speed or frequencies, std::domain_error for a hull that cannot be solved or non-finite results (naming the
+/// hull and frequency).
+RaoTable ComputeRaos(const hull::HullForm& hull, const hull::MassProperties& mass, double speed_m_s,
+                     double rho_kg_m3, double g_m_s2, const std::vector<double>& omega_rad_s,
+                     const RaoSolverOptions& options, const StripKernelBuilder& builder);
+
+}  // namespace hullopt::sk

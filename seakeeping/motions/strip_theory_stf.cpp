@@ -1,0 +1,126 @@
+#include "seakeeping/motions/strip_theory_stf.h"
+
+#include <cmath>
+#include <map>
+#include <memory>
+#include <mutex>
+#include <stdexcept>
+
+#include "seakeeping/motions/encounter_frequency.h"
+#include "seakeeping/sections/frequency_domain_section.h"
+#include "seakeeping/motions/periodic_motion_solver.h"
+
+namespace hullopt::sk {
+
+Eigen::RowVectorXcd UniformHeaveRow(const std::vector<Panel>& panels, double a33, double b33,
+                                    double omega_e) {
+  const auto n = static_cast<Eigen::Index>(panels.size());
+  Eigen::RowVectorXcd r(n);
+  double norm = 0.0;
+  for (const auto& p : panels) norm += std::pow(p.Normal()[1], 2) * p.Length();
+  const std::complex<double> z(-b33, -omega_e * a33);  // −(iω_e a33 + b33)
+  for (Eigen::Index i = 0; i < n; ++i)
+    r[i] = norm > 0 ? z * panels[i].Normal()[1] * panels[i].Length() / norm : 0.0;
+  return r;
+}
+
+SectionRowProvider FrequencyDomainSectionRows(const StripKernel& geometry, int panels_per_body,
+                                              bool interaction) {
+  if (panels_per_body < 1)
+    throw std::invalid_argument("FrequencyDomainSectionRows: panels_per_body must be >= 1");
+  struct Cache {
+    std::mutex mutex;
+    std::map<std::pair<int, double>, Eigen::RowVectorXcd> rows;
+  };
+  auto cache = std::make_shared<Cache>();
+  const StripKernel* g = &geometry;
+  return [cache, g, panels_per_body, interaction](int n, double omega_e) -> Eigen::RowVectorXcd {
+    {
+      std::lock_guard<std::mutex> lock(cache->mutex);
+      const auto it = cache->rows.find({n, omega_e});
+      if (it != cache->rows.end()) return it->second;
+    }
+    const auto& all = g->panels[n];
+    Eigen::RowVectorXcd r = Eigen::RowVectorXcd::Zero(static_cast<Eigen::Index>(all.size()));
+    if (!all.empty()) {
+      if (all.size() % panels_per_body != 0)
+        throw std::invalid_argument(
+            "FrequencyDomainSectionRows: panel count is not a multiple of panels_per_body");
+      std::vector<std::vector<Panel>> sections;
+      for (std::size_t i = 0; i < all.size(); i += panels_per_body)
+        sections.emplace_back(all.begin() + i, all.begin() + i + panels_per_body);
+      FrequencyDomainOptions o;
+      o.rho_kg_m3 = g->rho_kg_m3;
+      o.g_m_s2 = g->g_m_s2;
+      // F3 = iω_e ρ ∮ φ n_z dl (p = −iω_e ρ φ, n into the fluid); by reciprocity the heave force of a normal
+      // velocity V is iω_e ρ ∮ ψ_heave V dl.
+      const std::complex<double> c(0.0, omega_e * g->rho_kg_m3);
+      if (interaction) {
+        const SectionHydrodynamics h = SolveSectionFrequencyDomain(sections, omega_e, o);
+        for (Eigen::Index i = 0; i < r.size(); ++i) r[i] = c * h.radiation_potential(i, 1) * all[i].Length();
+      } else {
+        for (std::size_t b = 0; b < sections.size(); ++b) {
+          const SectionHydrodynamics h = SolveSectionFrequencyDomain({sections[b]}, omega_e, o);
+          for (int j = 0; j < panels_per_body; ++j) {
+            const auto i = static_cast<Eigen::Index>(b * panels_per_body + j);
+            r[i] = c * h.radiation_potential(j, 1) * all[i].Length();
+          }
+        }
+      }
+    }
+    std::lock_guard<std::mutex> lock(cache->mutex);
+    cache->rows[{n, omega_e}] = r;
+    return r;
+  };
+}
+
+RaoTable SolveStripTheoryRaos(const HeadSeaShipModel& model, const std::vector<double>& omega_rad_s,
+                              const SectionRowProvider& rows) {
+  if (omega_rad_s.empty()) throw std::invalid_argument("RAO sweep: the frequency list is empty");
+  const int N = model.Steps();
+  const auto nf = static_cast<int>(omega_rad_s.size());
+  RaoTable out;
+  out.speed_m_s = model.speed();
+  out.g_m_s2 = model.g();
+  out.omega_rad_s = omega_rad_s;
+  out.omega_e_rad_s.resize(nf);
+  out.heave.resize(nf);
+  out.pitch.resize(nf);
+  std::vector<int> bad(nf, 0);
+  for (int f = 0; f < nf; ++f) {
+    const double w = omega_rad_s[f];
+    if (!(w > 0.0) || !std::isfinite(w))
+      throw std::invalid_argument("RAO sweep: wave frequency " + std::to_string(w) + " rad/s must be > 0");
+    const double we = HeadSeaEncounterFrequency(w, model.speed(), model.g());
+    std::vector<Eigen::RowVectorXcd> r(N);
+    for (int n = 0; n < N; ++n) {
+      r[n] = rows(n, we);
+      if (r[n].size() != model.stations()[n].nz.size())
+        throw std::invalid_argument("strip theory: section row size differs from the panel count at step " +
+                                    std::to_string(n));
+    }
+    const std::complex<double> scale = 1.0 / std::complex<double>(0.0, we * model.dt());  // 1/(iω_e Δt)
+    PeriodicStripForce strip;
+    strip.first_step = [](int n) { return n > 0 ? n - 1 : 0; };
+    // With end faces of half weight (kCellFaces) their rows are doubled so that the hull sum still
+    // telescopes.
+    const auto& st = model.stations();
+    const double dx = model.dx();
+    strip.dot = [&r, &st, dx, scale](int n, int m, const Eigen::VectorXd& v, double) -> std::complex<double> {
+      const std::complex<double> d = r[m] * v.cast<std::complex<double>>();
+      const std::complex<double> s = st[n].weight_m == dx ? scale : scale * (dx / st[n].weight_m);
+      return m == n ? s * d : -s * d;
+    };
+    const auto x = SolvePeriodicFrequency(model, w, strip);
+    out.omega_e_rad_s[f] = we;
+    out.heave[f] = x[0];
+    out.pitch[f] = x[1];
+    bad[f] = !(std::isfinite(x[0].real()) && std::isfinite(x[0].imag()) && std::isfinite(x[1].real()) &&
+               std::isfinite(x[1].imag()));
+  }
+  for (int f = 0; f < nf; ++f)
+    if (bad[f]) model.ReportNonFinite("heave/pitch RAO (strip theory)", omega_rad_s[f]);
+  return out;
+}
+
+}  // namespace hullopt::sk

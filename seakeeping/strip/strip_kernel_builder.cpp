@@ -1,0 +1,86 @@
+#include "seakeeping/strip/strip_kernel_builder.h"
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+namespace hullopt::sk {
+
+StripKernel BuildStripKernel(const StripOperators& ops, const std::vector<double>& x_m) {
+  const int N = ops.Steps();
+  if (static_cast<int>(x_m.size()) != N)
+    throw std::invalid_argument("strip kernel: x_m has " + std::to_string(x_m.size()) + " stations for " +
+                                std::to_string(N) + " steps");
+  StripKernel K;
+  K.dt_s = ops.Dt();
+  K.dx_m = N > 1 ? std::fabs(x_m[1] - x_m[0]) : 0.0;
+  K.speed_m_s = K.dx_m / K.dt_s;
+  K.rho_kg_m3 = ops.Rho();
+  K.g_m_s2 = ops.G();
+  K.layout = ops.Layout();
+  K.x_m = x_m;
+  K.panels.resize(N);
+  for (int n = 0; n < N; ++n) K.panels[n] = ops.FullPanelsAt(n);
+  K.force.resize(N);
+  for (int n = 0; n < N; ++n) K.force[n].resize(n + 1);
+  for (int n = 0; n < N; ++n) K.system_condition.push_back(ops.PanelCount(n) > 0 ? ops.ConditionEstimate(n) : 1.0);
+  // Column by column (input step m): propagate the source responses forward in n.
+  for (int m = 0; m < N; ++m) {
+    const int Pm = ops.PanelCount(m);
+    std::vector<Eigen::MatrixXd> S(N);  // S[n] = ∂σ_n/∂V_m, n >= m
+    std::vector<Eigen::RowVectorXd> J(N);
+    for (int n = m; n < N; ++n) {
+      const int Pn = ops.PanelCount(n);
+      Eigen::MatrixXd rhs = Eigen::MatrixXd::Zero(Pn, Pm);
+      Eigen::RowVectorXd j = Eigen::RowVectorXd::Zero(Pm);
+      if (n == m) rhs.setIdentity();
+      for (int k = m; k < n; ++k) {
+        if (ops.PanelCount(k) == 0) continue;
+        if (Pn > 0) rhs.noalias() += ops.Memory(n, k) * S[k];
+        j.noalias() += ops.MomentumMemory(n, k) * S[k];
+      }
+      S[n] = Pn > 0 ? ops.Solve(n, rhs) : Eigen::MatrixXd(0, Pm);
+      if (Pn > 0) j.noalias() += ops.MomentumCurrent(n) * S[n];
+      J[n] = j;
+      auto at = [&](int k) { return k >= m ? J[k] : Eigen::RowVectorXd(Eigen::RowVectorXd::Zero(Pm)); };
+      const auto c = ops.ForceStencil(n);
+      Eigen::RowVectorXd f;
+      if (ops.Force() == SectionalForce::kPressure) {
+        // The same difference stencil on the momenta of earlier potentials on THIS contour (φ_t at fixed
+        // points); sources before m are zero.
+        Eigen::RowVectorXd earlier[2] = {Eigen::RowVectorXd::Zero(Pm), Eigen::RowVectorXd::Zero(Pm)};
+        for (int s = 1; s <= 2; ++s)
+          for (int k = m; k <= n - s; ++k)
+            if (ops.PanelCount(k) > 0) earlier[s - 1].noalias() += ops.PressureMomentum(s, n, k) * S[k];
+        f = (c[0] * J[n] + c[1] * earlier[0] + c[2] * earlier[1]) / (2.0 * ops.Dt());
+      } else {
+        f = (c[0] * J[n] + c[1] * at(n - 1) + c[2] * at(n - 2)) / (2.0 * ops.Dt());
+      }
+      if (!ops.MirrorReduced()) {
+        K.force[n][m] = f;
+        continue;
+      }
+      // Back to all panels: each panel of a mirror pair takes half the reduced input (its symmetric part).
+      const auto& index = ops.ReducedIndex(m);
+      const auto& share = ops.ReducedShare(m);
+      K.force[n][m].resize(static_cast<Eigen::Index>(index.size()));
+      for (std::size_t p = 0; p < index.size(); ++p) K.force[n][m](p) = share[p] * f(index[p]);
+    }
+  }
+  return K;
+}
+
+StripKernel BuildStripKernel(const std::vector<std::vector<Panel>>& panels_per_step,
+                             const std::vector<double>& x_m, double dt, double rho, double g,
+                             const StripOperatorOptions& options) {
+  return BuildStripKernel(BuildStripOperators(panels_per_step, dt, rho, g, options), x_m);
+}
+
+StripKernel BuildStripKernelMirrorReduced(const std::vector<std::vector<Panel>>& panels_per_step,
+                                          const std::vector<double>& x_m, double dt, double rho, double g,
+                                          StripOperatorOptions options) {
+  options.use_mirror_symmetry = true;
+  return BuildStripKernel(BuildStripOperators(panels_per_step, dt, rho, g, options), x_m);
+}
+
+}  // namespace hullopt::sk

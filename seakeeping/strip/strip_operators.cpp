@@ -1,0 +1,440 @@
+#include "seakeeping/strip/strip_operators.h"
+
+#include <algorithm>
+#include <limits>
+#include <map>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+#include <utility>
+
+#include "seakeeping/green/gauss_legendre.h"
+#include "seakeeping/green/memory_influence.h"
+#include "seakeeping/green/rankine_panel.h"
+#include "seakeeping/green/transient_green.h"
+
+namespace hullopt::sk {
+namespace {
+
+constexpr double kInv2Pi = 0.5 / M_PI;
+
+// Collocation points (panel mid-points, where the body condition holds) and the field quadrature of ∫φ n_z
+// dl.
+struct FieldSet {
+  std::vector<double> cy, cz, ny, nz;  // per panel
+  std::vector<double> qy, qz, wnz;     // per quadrature point: position and weight · n_z [m]
+};
+
+FieldSet MakeFieldSet(const std::vector<Panel>& panels, int points_per_panel) {
+  FieldSet f;
+  const auto& rule = GaussLegendre01(points_per_panel);
+  for (const Panel& p : panels) {
+    const auto n = p.Normal();
+    f.cy.push_back(p.MidY()), f.cz.push_back(p.MidZ()), f.ny.push_back(n[0]), f.nz.push_back(n[1]);
+    const double L = p.Length();
+    for (int k = 0; k < points_per_panel; ++k) {
+      const double u = rule.nodes[k];
+      f.qy.push_back(p.y1 + u * (p.y2 - p.y1));
+      f.qz.push_back(p.z1 + u * (p.z2 - p.z1));
+      f.wnz.push_back(rule.weights[k] * L * n[1]);
+    }
+  }
+  return f;
+}
+
+// Memory of the sources on `src` at one lag level s, to be differenced over an interval:
+// nv(i, j) = (1/2π) ∫_panel ∂H⁽⁻¹⁾/∂n_i ds (real part taken), pl(j) = −(ρ/2π) Σ_q wnz_q ∫_panel Re H⁽⁻¹⁾ ds.
+struct Level {
+  Eigen::MatrixXd nv;
+  Eigen::RowVectorXd pl;
+};
+
+// Without `velocity` only pl is computed (nv stays zero).
+Level ComputeLevel(const FieldSet& f, const std::vector<Panel>& src, double s, double g, double rho,
+                   bool velocity = true) {
+  const int nf = static_cast<int>(f.cy.size()), ns = static_cast<int>(src.size());
+  Level out{Eigen::MatrixXd::Zero(velocity ? nf : 0, ns), Eigen::RowVectorXd::Zero(ns)};
+  if (s == 0.0 || ns == 0) return out;
+  // Adjacent panels of one contour share an end point: evaluate the kernel there once.
+  std::vector<char> shared(ns, 0);
+  for (int j = 1; j < ns; ++j) shared[j] = src[j - 1].y2 == src[j].y1 && src[j - 1].z2 == src[j].z1;
+  std::vector<std::complex<double>> h1(ns), h2(ns);
+  for (int i = 0; velocity && i < nf; ++i) {
+    for (int j = 0; j < ns; ++j) {
+      const Panel& p = src[j];
+      h1[j] = shared[j] ? h2[j - 1] : TransientGreenTimeIntegral(f.cy[i] - p.y1, f.cz[i] + p.z1, s, g);
+      h2[j] = TransientGreenTimeIntegral(f.cy[i] - p.y2, f.cz[i] + p.z2, s, g);
+      out.nv(i, j) = MemoryNormalVelocityFromEnds(p, h1[j], h2[j], f.ny[i], f.nz[i]);
+    }
+  }
+  // Momentum: Σ_q wnz_q ∫_panel Re H⁽⁻¹⁾ ds, exact along the panel through K (memory_influence.h).
+  for (std::size_t q = 0; q < f.qy.size(); ++q) {
+    for (int j = 0; j < ns; ++j) {
+      const Panel& p = src[j];
+      h1[j] = shared[j] ? h2[j - 1] : TransientGreenSpaceTimeIntegral(f.qy[q] - p.y1, f.qz[q] + p.z1, s, g);
+      h2[j] = TransientGreenSpaceTimeIntegral(f.qy[q] - p.y2, f.qz[q] + p.z2, s, g);
+      out.pl(j) += f.wnz[q] * MemoryPotentialLevelFromEnds(p, h1[j], h2[j]);
+    }
+  }
+  out.pl *= -rho * kInv2Pi;
+  return out;
+}
+
+// A lag that is a whole number of half steps, as that number (the key of shared levels).
+int HalfSteps(double lag, double dt) { return static_cast<int>(std::lround(2.0 * lag / dt)); }
+
+// Rankine normal velocities at the collocation points of f from the sources `src` (with the +1/2 self term
+// where a collocation point is a source panel's midpoint) and the Rankine part of the momentum row.
+void Rankine(const FieldSet& f, const std::vector<Panel>& src, double rho, Eigen::MatrixXd* A,
+             Eigen::RowVectorXd* mom) {
+  const int nf = static_cast<int>(f.cy.size()), ns = static_cast<int>(src.size());
+  A->resize(nf, ns);
+  mom->setZero(ns);
+  for (int j = 0; j < ns; ++j) {
+    for (int i = 0; i < nf; ++i) {
+      const auto r = RankinePanelInfluence(src[j], f.cy[i], f.cz[i]);
+      const auto m = ImagePanelInfluence(src[j], f.cy[i], f.cz[i]);
+      (*A)(i, j) = f.ny[i] * (r.vy - m.vy) + f.nz[i] * (r.vz - m.vz);
+    }
+    double sum = 0;
+    for (std::size_t q = 0; q < f.qy.size(); ++q)
+      sum += f.wnz[q] * (RankinePanelInfluence(src[j], f.qy[q], f.qz[q]).phi -
+                         ImagePanelInfluence(src[j], f.qy[q], f.qz[q]).phi);
+    (*mom)(j) = rho * sum;
+  }
+}
+
+// Mirror symmetry of one step's panels about y = yc: the reduced (half) panels and, per reduced panel, its
+// own full index and its partner's (the same index for a panel on the symmetry line).
+struct MirrorMap {
+  std::vector<int> half, partner;
+  std::vector<int> reduced_of;  // per full panel
+  std::vector<double> share;    // per full panel
+};
+
+bool FindMirrorMap(const std::vector<Panel>& P, double yc, double tol, MirrorMap* out) {
+  const int n = static_cast<int>(P.size());
+  std::vector<int> mirror(n, -1);
+  for (int j = 0; j < n; ++j) {
+    // The mirror image of a panel runs the other way, so that its normal is mirrored too.
+    for (int k = 0; k < n && mirror[j] < 0; ++k)
+      if (std::fabs(P[k].y1 - (2 * yc - P[j].y2)) <= tol && std::fabs(P[k].z1 - P[j].z2) <= tol &&
+          std::fabs(P[k].y2 - (2 * yc - P[j].y1)) <= tol && std::fabs(P[k].z2 - P[j].z1) <= tol)
+        mirror[j] = k;
+    if (mirror[j] < 0) return false;
+  }
+  MirrorMap m;
+  m.reduced_of.assign(n, -1);
+  m.share.assign(n, 1.0);
+  for (int j = 0; j < n; ++j) {
+    const double d = P[j].MidY() - yc;
+    if (mirror[j] == j || d > tol) {
+      m.reduced_of[j] = static_cast<int>(m.half.size());
+      m.half.push_back(j);
+      m.partner.push_back(mirror[j]);
+    }
+  }
+  for (int j = 0; j < n; ++j) {
+    if (m.reduced_of[j] < 0) m.reduced_of[j] = m.reduced_of[mirror[j]];
+    if (m.reduced_of[j] < 0) return false;  // a pair straddling the line off its own mirror: not symmetric
+    if (mirror[j] != j) m.share[j] = 0.5;
+  }
+  *out = std::move(m);
+  return true;
+}
+
+// One symmetry line y_c for all steps (the memory couples the steps, so they must share it).
+bool FindMirrorMaps(const std::vector<std::vector<Panel>>& steps, std::vector<MirrorMap>* maps) {
+  double scale = 0.0, ysum = 0.0;
+  int count = 0;
+  for (const auto& P : steps)
+    for (const Panel& p : P) {
+      scale = std::fmax(scale, std::fmax(std::fmax(std::fabs(p.y1), std::fabs(p.y2)),
+                                         std::fmax(std::fabs(p.z1), std::fabs(p.z2))));
+      ysum += p.y1 + p.y2;
+      count += 2;
+    }
+  if (count == 0) return false;
+  const double yc = ysum / count, tol = 1e-9 * scale;
+  maps->assign(steps.size(), MirrorMap{});
+  for (std::size_t n = 0; n < steps.size(); ++n)
+    if (!FindMirrorMap(steps[n], yc, tol, &(*maps)[n])) return false;
+  return true;
+}
+
+// Columns of the full sources combined into the symmetric (σ_j = σ_j′) reduced sources.
+Eigen::MatrixXd ReduceColumns(const Eigen::MatrixXd& full, const MirrorMap& m) {
+  Eigen::MatrixXd out(full.rows(), static_cast<Eigen::Index>(m.half.size()));
+  for (std::size_t r = 0; r < m.half.size(); ++r) {
+    out.col(r) = full.col(m.half[r]);
+    if (m.partner[r] != m.half[r]) out.col(r) += full.col(m.partner[r]);
+  }
+  return out;
+}
+Eigen::RowVectorXd ReduceColumns(const Eigen::RowVectorXd& full, const MirrorMap& m) {
+  Eigen::RowVectorXd out(static_cast<Eigen::Index>(m.half.size()));
+  for (std::size_t r = 0; r < m.half.size(); ++r)
+    out(r) = full(m.half[r]) + (m.partner[r] != m.half[r] ? full(m.partner[r]) : 0.0);
+  return out;
+}
+
+void CheckPanels(const std::vector<Panel>& panels, int step) {
+  for (std::size_t j = 0; j < panels.size(); ++j) {
+    const Panel& p = panels[j];
+    const std::string where = "step " + std::to_string(step) + " panel " + std::to_string(j);
+    if (!(std::isfinite(p.y1) && std::isfinite(p.z1) && std::isfinite(p.y2) && std::isfinite(p.z2)))
+      throw std::invalid_argument(where + ": non-finite coordinate");
+    if (p.z1 > 0.0 || p.z2 > 0.0)
+      throw std::invalid_argument(where + ": panel above the free surface (z > 0): z1 = " +
+                                  std::to_string(p.z1) + ", z2 = " + std::to_string(p.z2));
+    if (!(p.Length() > 0.0)) throw std::invalid_argument(where + ": zero-length panel");
+    if (p.MidZ() >= 0.0)
+      throw std::invalid_argument(where + ": collocation point on z = 0 (panel lies on the surface)");
+  }
+}
+
+void CheckScalars(double dt, double rho, double g, const StripOperatorOptions& options) {
+  std::string err;
+  if (!options.IsValid(&err)) throw std::invalid_argument(err);
+  if (!(dt > 0.0) || !std::isfinite(dt))
+    throw std::invalid_argument("time step dt must be > 0, got " + std::to_string(dt));
+  if (!(rho > 0.0)) throw std::invalid_argument("rho must be > 0, got " + std::to_string(rho));
+  if (!(g > 0.0)) throw std::invalid_argument("g must be > 0, got " + std::to_string(g));
+}
+
+}  // namespace
+
+bool StripOperatorOptions::IsValid(std::string* error) const {
+  auto fail = [&](const std::string& m) {
+    if (error) *error = m;
+    return false;
+  };
+  if (field_points_per_panel < 1 || field_points_per_panel > 16)
+    return fail("field_points_per_panel must be in 1..16, got " + std::to_string(field_points_per_panel));
+  return true;
+}
+
+const Eigen::MatrixXd& StripOperators::System(int n) const {
+  return system_[invariant_ ? (n == 0 ? 0 : 1) : n];
+}
+
+double StripOperators::ConditionEstimate(int n) const {
+  const auto& lu = lu_[invariant_ ? (n == 0 ? 0 : 1) : n];
+  if (lu.rows() == 0) return 1.0;
+  const double r = lu.rcond();
+  return r > 0.0 ? 1.0 / r : std::numeric_limits<double>::infinity();
+}
+
+Eigen::MatrixXd StripOperators::Solve(int n, const Eigen::MatrixXd& rhs) const {
+  if (rhs.size() == 0) return rhs;
+  return lu_[invariant_ ? (n == 0 ? 0 : 1) : n].solve(rhs);
+}
+
+namespace {
+void RequireStart(bool has_start) {
+  if (!has_start)
+    throw std::logic_error(
+        "strip operators built steady_state_only: no memory of the first interval for marching");
+}
+}  // namespace
+
+const Eigen::MatrixXd& StripOperators::Memory(int n, int k) const {
+  if (!invariant_) return memory_[n][k];
+  if (k == 0) RequireStart(has_start_);
+  return k == 0 ? memory_[1][n] : memory_[0][n - k];
+}
+
+const Eigen::RowVectorXd& StripOperators::MomentumCurrent(int n) const {
+  return momentum_current_[invariant_ ? (n == 0 ? 0 : 1) : n];
+}
+
+const Eigen::RowVectorXd& StripOperators::MomentumMemory(int n, int k) const {
+  if (!invariant_) return momentum_memory_[n][k];
+  if (k == 0) RequireStart(has_start_);
+  return k == 0 ? momentum_memory_[1][n] : momentum_memory_[0][n - k];
+}
+
+const Eigen::RowVectorXd& StripOperators::PressureMomentum(int s, int n, int k) const {
+  if (force_ != SectionalForce::kPressure || s < 1 || s > 2 || n < 0 || n >= steps_ || k < 0 || k > n - s)
+    throw std::out_of_range("PressureMomentum: needs operators built for the pressure form, s in 1..2, 0 <= k <= n - s");
+  return pressure_momentum_[s - 1][n][k];
+}
+
+const Eigen::MatrixXd& StripOperators::LagMemory(int l) const {
+  if (!invariant_ || l < 1 || l >= steps_)
+    throw std::out_of_range("LagMemory: needs time-invariant operators, 1 <= l < steps");
+  return memory_[0][l];
+}
+
+const Eigen::RowVectorXd& StripOperators::LagMomentum(int l) const {
+  if (!invariant_ || l < 1 || l >= steps_)
+    throw std::out_of_range("LagMomentum: needs time-invariant operators, 1 <= l < steps");
+  return momentum_memory_[0][l];
+}
+
+StripOperators BuildStripOperators(const std::vector<std::vector<Panel>>& panels_per_step, double dt,
+                                   double rho, double g, const StripOperatorOptions& options) {
+  CheckScalars(dt, rho, g, options);
+  const int N = static_cast<int>(panels_per_step.size());
+  for (int n = 0; n < N; ++n) CheckPanels(panels_per_step[n], n);
+  StripOperators ops;
+  ops.steps_ = N, ops.dt_ = dt, ops.rho_ = rho, ops.g_ = g, ops.invariant_ = false;
+  ops.layout_ = options.layout;
+  ops.force_ = options.sectional_force;
+  if (ops.layout_ == StationLayout::kCellFaces && N < 4)
+    throw std::invalid_argument("strip operators: stations at the cell faces need >= 4 steps, got " +
+                                std::to_string(N));
+  std::vector<MirrorMap> maps;
+  ops.reduced_ = options.use_mirror_symmetry && FindMirrorMaps(panels_per_step, &maps);
+  ops.reduced_index_.resize(N);
+  ops.reduced_share_.resize(N);
+  if (ops.reduced_) {
+    ops.full_panels_ = panels_per_step;
+    ops.panels_.resize(N);
+    for (int n = 0; n < N; ++n) {
+      for (int j : maps[n].half) ops.panels_[n].push_back(panels_per_step[n][j]);
+      ops.reduced_index_[n] = maps[n].reduced_of;
+      ops.reduced_share_[n] = maps[n].share;
+    }
+  } else {
+    ops.panels_ = panels_per_step;
+    for (int n = 0; n < N; ++n) {
+      const int P = static_cast<int>(panels_per_step[n].size());
+      for (int j = 0; j < P; ++j) ops.reduced_index_[n].push_back(j);
+      ops.reduced_share_[n].assign(P, 1.0);
+    }
+  }
+  ops.system_.resize(N);
+  ops.lu_.resize(N);
+  ops.momentum_current_.resize(N);
+  ops.memory_.resize(N);
+  ops.momentum_memory_.resize(N);
+  const bool pressure = ops.force_ == SectionalForce::kPressure;
+  if (pressure) ops.pressure_momentum_[0].resize(N), ops.pressure_momentum_[1].resize(N);
+  // Each n is independent and computed by one thread in a fixed order: bitwise identical for any thread
+  // count.
+#pragma omp parallel for schedule(dynamic, 1)
+  for (int n = N - 1; n >= 0; --n) {  // largest work first
+    FieldSet f = MakeFieldSet(ops.panels_[n], options.field_points_per_panel);
+    if (ops.reduced_) {
+      // The momentum integrand is symmetric: the points of a mirror pair's half count twice.
+      const int pp = options.field_points_per_panel;
+      for (std::size_t r = 0; r < maps[n].half.size(); ++r)
+        if (maps[n].partner[r] != maps[n].half[r])
+          for (int q = 0; q < pp; ++q) f.wnz[r * pp + q] *= 2.0;
+    }
+    auto reduce = [&](Level&& l, int k) {
+      if (ops.reduced_) l.nv = ReduceColumns(l.nv, maps[k]), l.pl = ReduceColumns(l.pl, maps[k]);
+      return std::move(l);
+    };
+    Eigen::MatrixXd A;
+    Eigen::RowVectorXd mom;
+    Rankine(f, panels_per_step[n], rho, &A, &mom);
+    if (ops.reduced_) A = ReduceColumns(A, maps[n]), mom = ReduceColumns(mom, maps[n]);
+    ops.memory_[n].resize(n);
+    ops.momentum_memory_[n].resize(n);
+    // Pressure form only: momentum rows of the levels by (source step, lag in half steps), shared between the
+    // momentum rows and the time-shifted rows below, whose lag intervals abut.
+    std::map<std::pair<int, int>, Eigen::RowVectorXd> momentum_level;
+    auto level_pl = [&](int k, double lag) -> const Eigen::RowVectorXd& {
+      auto it = momentum_level.find({k, HalfSteps(lag, dt)});
+      if (it != momentum_level.end()) return it->second;
+      return momentum_level[{k, HalfSteps(lag, dt)}] =
+                 reduce(ComputeLevel(f, panels_per_step[k], lag, g, rho, false), k).pl;
+    };
+    for (int k = 0; k <= n; ++k) {
+      // Lags of interval k seen at t_n: [max(0, t_k − dt/2), t_k + dt/2] (k < n), [t_n − dt/2, t_n] (k = n).
+      double s1, s2;
+      if (k == n) {
+        if (n == 0) break;
+        s1 = 0.0, s2 = 0.5 * dt;
+      } else {
+        s1 = (n - k - 0.5) * dt;
+        s2 = k == 0 ? n * dt : (n - k + 0.5) * dt;
+      }
+      const Level a = reduce(ComputeLevel(f, panels_per_step[k], s1, g, rho), k);
+      const Level b = reduce(ComputeLevel(f, panels_per_step[k], s2, g, rho), k);
+      if (pressure) momentum_level[{k, HalfSteps(s1, dt)}] = a.pl, momentum_level[{k, HalfSteps(s2, dt)}] = b.pl;
+      if (k == n) {
+        A -= b.nv - a.nv;
+        mom += b.pl - a.pl;
+      } else {
+        ops.memory_[n][k] = b.nv - a.nv;
+        ops.momentum_memory_[n][k] = b.pl - a.pl;
+      }
+    }
+    // Pressure form: the momentum on THIS contour of the potential at t_p, p = n − s. Sources of step p are
+    // current there (Rankine part plus the memory of [t_p − dt/2, t_p]), earlier ones are memory.
+    for (int sh = 1; pressure && sh <= 2; ++sh) {
+      const int p = n - sh;
+      auto& rows = ops.pressure_momentum_[sh - 1][n];
+      rows.resize(std::max(p + 1, 0));
+      for (int k = 0; k <= p; ++k) {
+        Eigen::RowVectorXd row = Eigen::RowVectorXd::Zero(ops.reduced_ ? maps[k].half.size() : panels_per_step[k].size());
+        double s1 = 0.0, s2 = 0.5 * dt;
+        if (k == p) {
+          Eigen::MatrixXd unused;
+          Rankine(f, panels_per_step[p], rho, &unused, &row);
+          if (ops.reduced_) row = ReduceColumns(row, maps[p]);
+        } else {
+          s1 = (p - k - 0.5) * dt;
+          s2 = k == 0 ? p * dt : (p - k + 0.5) * dt;
+        }
+        if (!(k == p && p == 0)) row += level_pl(k, s2) - level_pl(k, s1);  // step 0 has no memory at t_0
+        rows[k] = row;
+      }
+    }
+    ops.system_[n] = A;
+    if (A.rows() > 0) ops.lu_[n].compute(A);
+    ops.momentum_current_[n] = mom;
+  }
+  return ops;
+}
+
+StripOperators BuildFixedSectionOperators(const std::vector<Panel>& panels, int steps, double dt, double rho,
+                                          double g, const StripOperatorOptions& options,
+                                          bool steady_state_only) {
+  CheckScalars(dt, rho, g, options);
+  CheckPanels(panels, 0);
+  if (steps < 1) throw std::invalid_argument("steps must be >= 1, got " + std::to_string(steps));
+  if (panels.empty()) throw std::invalid_argument("fixed section has no panels");
+  const int N = steps;
+  StripOperators ops;
+  ops.steps_ = N, ops.dt_ = dt, ops.rho_ = rho, ops.g_ = g, ops.invariant_ = true;
+  ops.has_start_ = !steady_state_only;
+  ops.panels_ = {panels};
+  ops.reduced_index_.assign(1, {});
+  for (std::size_t j = 0; j < panels.size(); ++j) ops.reduced_index_[0].push_back(static_cast<int>(j));
+  ops.reduced_share_.assign(1, std::vector<double>(panels.size(), 1.0));
+  const FieldSet f = MakeFieldSet(panels, options.field_points_per_panel);
+  // Levels: half[m] at (m + ½)dt, m = 0..N−1; whole[n] at n·dt, n = 1..N−1.
+  std::vector<Level> half(N), whole(N);
+  const int jobs = steady_state_only ? N : 2 * N - 1;
+#pragma omp parallel for schedule(dynamic, 1)
+  for (int job = 0; job < jobs; ++job) {
+    if (job < N)
+      half[job] = ComputeLevel(f, panels, (job + 0.5) * dt, g, rho);
+    else
+      whole[job - N + 1] = ComputeLevel(f, panels, (job - N + 1) * dt, g, rho);
+  }
+  Eigen::MatrixXd A;
+  Eigen::RowVectorXd mom;
+  Rankine(f, panels, rho, &A, &mom);
+  ops.system_ = {A, A - half[0].nv};
+  ops.lu_.resize(2);
+  ops.lu_[0].compute(ops.system_[0]);
+  ops.lu_[1].compute(ops.system_[1]);
+  ops.momentum_current_ = {mom, mom + half[0].pl};
+  ops.memory_.assign(2, std::vector<Eigen::MatrixXd>(N));
+  ops.momentum_memory_.assign(2, std::vector<Eigen::RowVectorXd>(N));
+  for (int l = 1; l < N; ++l) {
+    ops.memory_[0][l] = half[l].nv - half[l - 1].nv;
+    ops.momentum_memory_[0][l] = half[l].pl - half[l - 1].pl;
+    if (steady_state_only) continue;
+    ops.memory_[1][l] = whole[l].nv - half[l - 1].nv;
+    ops.momentum_memory_[1][l] = whole[l].pl - half[l - 1].pl;
+  }
+  return ops;
+}
+
+}  // namespace hullopt::sk
