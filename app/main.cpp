@@ -20,13 +20,7 @@ int main(int argc, char** argv) {
   app.set_version_flag("--version", std::string("hullopt ") + hullopt::kVersion);
 #endif
   app.require_subcommand(1);
-  hullopt::app::AddHullCommand(app);
-  hullopt::app::AddSectionCommand(app);
-  hullopt::app::AddRaoCommand(app);
-  hullopt::app::AddEvaluateCommand(app);
-  hullopt::app::AddOptimizeCommand(app);
-  hullopt::app::AddExploreCommand(app);
-  hullopt::app::AddCalibrateCommand(app);
+  hullopt::app::AddAllCommands(app);
   int code = 0;
   std::string message;
   try {

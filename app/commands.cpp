@@ -1,0 +1,15 @@
+#include "app/commands.h"
+
+namespace hullopt::app {
+
+void AddAllCommands(CLI::App& app) {
+  AddHullCommand(app);
+  AddSectionCommand(app);
+  AddRaoCommand(app);
+  AddEvaluateCommand(app);
+  AddOptimizeCommand(app);
+  AddExploreCommand(app);
+  AddCalibrateCommand(app);
+}
+
+}  // namespace hullopt::app

@@ -1,0 +1,370 @@
+// The Python module `hullopt` (extension `hullopt._hullopt`): hull generation and reading, hydrostatics,
+// heave and pitch RAOs, seas and MSI, and the command line in-process (campaigns). Options given as Python
+// dicts go through the same YAML readers as the CLI's config files, so defaults, rules and error messages are
+// the CLI's. Arrays are NumPy arrays; units are SI and named in every docstring.
+#include <pybind11/complex.h>
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include <CLI/CLI.hpp>
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+#include <complex>
+#include <string>
+#include <vector>
+
+#include "app/commands.h"
+#include "app/design_case.h"
+#include "hullopt/hullopt.h"
+#include "io/hull_config.h"
+#include "io/input_error.h"
+#include "io/motion_config.h"
+#include "io/seas_config.h"
+#include "io/water_config.h"
+#include "io/yaml_map.h"
+
+namespace py = pybind11;
+using namespace hullopt;
+
+namespace {
+
+constexpr const char* kPythonSource = "<python>";
+
+// A Python value (dict, list, str, bool, int, float) as a YAML node, for the config readers.
+YAML::Node ToYaml(const py::handle& v) {
+  if (py::isinstance<py::dict>(v)) {
+    YAML::Node n(YAML::NodeType::Map);
+    for (const auto& kv : py::reinterpret_borrow<py::dict>(v)) n[py::str(kv.first).cast<std::string>()] = ToYaml(kv.second);
+    return n;
+  }
+  if (py::isinstance<py::list>(v) || py::isinstance<py::tuple>(v) || py::isinstance<py::array>(v)) {
+    YAML::Node n(YAML::NodeType::Sequence);
+    for (const auto& x : py::iter(v)) n.push_back(ToYaml(x));
+    return n;
+  }
+  if (v.is_none()) return YAML::Node();
+  if (py::isinstance<py::bool_>(v)) return YAML::Node(v.cast<bool>() ? "true" : "false");
+  if (py::isinstance<py::int_>(v)) return YAML::Node(std::to_string(v.cast<long long>()));
+  if (py::isinstance<py::float_>(v)) {
+    std::ostringstream os;
+    os.precision(17);
+    os << v.cast<double>();
+    return YAML::Node(os.str());
+  }
+  return YAML::Node(py::str(v).cast<std::string>());
+}
+
+// A root mapping {key: value} read by the CLI's readers.
+io::YamlMap RootOf(const std::string& key, const py::object& value) {
+  YAML::Node root(YAML::NodeType::Map);
+  if (!value.is_none()) root[key] = ToYaml(value);
+  return io::YamlMap(root, "", kPythonSource, YAML::Node(YAML::NodeType::Map));
+}
+
+py::array_t<double> Array(const std::vector<double>& v) { return py::array_t<double>(v.size(), v.data()); }
+py::array_t<std::complex<double>> Array(const std::vector<std::complex<double>>& v) {
+  return py::array_t<std::complex<double>>(v.size(), v.data());
+}
+
+py::dict HydrostaticsDict(const hull::Hydrostatics& h) {
+  py::dict d;
+  d["L_m"] = h.L_m; d["B_m"] = h.B_m; d["T_m"] = h.T_m; d["reference_hulls"] = h.reference_hulls;
+  d["volume_m3"] = h.volume_m3; d["displacement_kg"] = h.displacement_kg; d["displacement_t"] = h.displacement_t;
+  d["lcb_m_from_ap"] = h.lcb_m_from_ap; d["vcb_m"] = h.vcb_m; d["awp_m2"] = h.awp_m2;
+  d["lcf_m_from_ap"] = h.lcf_m_from_ap; d["midship_area_m2"] = h.midship_area_m2; d["i_l_m4"] = h.i_l_m4;
+  d["i_t_m4"] = h.i_t_m4; d["bm_l_m"] = h.bm_l_m; d["bm_t_m"] = h.bm_t_m; d["kg_m"] = h.kg_m;
+  d["gm_l_m"] = h.gm_l_m; d["gm_t_m"] = h.gm_t_m; d["wetted_surface_m2"] = h.wetted_surface_m2;
+  d["x_ap_m"] = h.x_ap_m; d["Cb"] = h.Cb; d["Cp"] = h.Cp; d["Cm"] = h.Cm; d["Cwp"] = h.Cwp; d["Cvp"] = h.Cvp;
+  d["LCB_pct_L"] = h.LCB_pct_L; d["LCF_pct_L"] = h.LCF_pct_L;
+  return d;
+}
+
+py::dict RaoDict(const sk::RaoTable& t) {
+  py::dict d;
+  d["speed_m_s"] = t.speed_m_s;
+  d["g_m_s2"] = t.g_m_s2;
+  d["omega_rad_s"] = Array(t.omega_rad_s);
+  d["omega_e_rad_s"] = Array(t.omega_e_rad_s);
+  d["heave"] = Array(t.heave);
+  d["pitch"] = Array(t.pitch);
+  d["warnings"] = t.warnings;
+  return d;
+}
+
+sk::RaoTable RaoFromDict(const py::dict& d) {
+  sk::RaoTable t;
+  t.speed_m_s = d["speed_m_s"].cast<double>();
+  t.g_m_s2 = d["g_m_s2"].cast<double>();
+  t.omega_rad_s = d["omega_rad_s"].cast<std::vector<double>>();
+  t.omega_e_rad_s = d["omega_e_rad_s"].cast<std::vector<double>>();
+  t.heave = d["heave"].cast<std::vector<std::complex<double>>>();
+  t.pitch = d["pitch"].cast<std::vector<std::complex<double>>>();
+  if (d.contains("warnings")) t.warnings = d["warnings"].cast<std::vector<std::string>>();
+  return t;
+}
+
+py::dict PositionDict(const sk::PositionResult& p) {
+  py::dict d;
+  d["position"] = p.position; d["x_from_cg_m"] = p.x_from_cg_m; d["rms_accel_m_s2"] = p.rms_accel_m_s2;
+  d["rms_accel_g"] = p.rms_accel_g; d["rms_displacement_m"] = p.rms_displacement_m;
+  d["omega_char_rad_s"] = p.omega_char_rad_s; d["msi_pct"] = p.msi_pct;
+  return d;
+}
+
+sk::HullExtent ExtentOf(const hull::Hydrostatics& hs, const hull::MassProperties& m) {
+  return {m.lcg_m_from_ap - hs.x_ap_m, hs.x_ap_m + hs.L_m - m.lcg_m_from_ap};
+}
+
+io::WaterOptions WaterOf(const py::object& water) {
+  io::YamlMap root = RootOf("water", water);
+  return io::ParseWater(root);
+}
+
+}  // namespace
+
+PYBIND11_MODULE(_hullopt, m) {
+  m.doc() = "hullopt: hull-form optimisation of high-speed vessels for seakeeping in head seas";
+  m.attr("__version__") = kVersion;
+  py::register_exception<io::InputError>(m, "InputError", PyExc_ValueError);
+
+  py::class_<hull::DesignVariables>(m, "DesignVariables",
+                                    "Design variables of the parametric hull (Table 1 of Davis & Holloway 2003). "
+                                    "Coefficients of one demihull for catamarans and SWATHs, of the whole for the "
+                                    "trihull; L, B, T of the main hull / demihull.")
+      .def(py::init([](const py::kwargs& kw) {
+             hull::DesignVariables dv;
+             py::object self = py::cast(dv);
+             for (const auto& kv : kw) {
+               const std::string key = py::str(kv.first);
+               if (!py::hasattr(self, key.c_str()))
+                 throw py::type_error("DesignVariables: unknown variable '" + key + "'");
+               py::setattr(self, key.c_str(), kv.second);
+             }
+             return self.cast<hull::DesignVariables>();
+           }),
+           "DesignVariables(**variables): defaults overridden by keyword, e.g. DesignVariables(L_over_B=12)")
+      .def_property(
+          "type", [](const hull::DesignVariables& d) { return hull::ToString(d.type); },
+          [](hull::DesignVariables& d, const std::string& s) { d.type = hull::ParseHullType(s); },
+          "monohull | catamaran | swath | trihull")
+      .def_property(
+          "section_style", [](const hull::DesignVariables& d) { return hull::ToString(d.section_style); },
+          [](hull::DesignVariables& d, const std::string& s) { d.section_style = hull::ParseSectionStyle(s); },
+          "round_bilge | hard_chine | swath_bulb")
+      .def_readwrite("displacement_t", &hull::DesignVariables::displacement_t, "[t] whole vessel")
+      .def_readwrite("rho_kg_m3", &hull::DesignVariables::rho_kg_m3, "[kg/m^3] water density")
+      .def_readwrite("L_over_B", &hull::DesignVariables::L_over_B)
+      .def_readwrite("B_over_T", &hull::DesignVariables::B_over_T)
+      .def_readwrite("Cb", &hull::DesignVariables::Cb)
+      .def_readwrite("Cp", &hull::DesignVariables::Cp)
+      .def_readwrite("Cwp", &hull::DesignVariables::Cwp)
+      .def_readwrite("LCB_pct_L", &hull::DesignVariables::LCB_pct_L, "[% L from midships, + forward]")
+      .def_readwrite("LCF_pct_L", &hull::DesignVariables::LCF_pct_L, "[% L from midships, + forward]")
+      .def_readwrite("transom_immersion", &hull::DesignVariables::transom_immersion, "transom draught / T")
+      .def_readwrite("transom_beam_ratio", &hull::DesignVariables::transom_beam_ratio)
+      .def_readwrite("keel_rise", &hull::DesignVariables::keel_rise)
+      .def_readwrite("spacing_over_L", &hull::DesignVariables::spacing_over_L)
+      .def_readwrite("spacing_m", &hull::DesignVariables::spacing_m, "[m] wins over spacing_over_L if > 0")
+      .def_readwrite("strut_ratio", &hull::DesignVariables::strut_ratio)
+      .def_readwrite("outrigger_length_ratio", &hull::DesignVariables::outrigger_length_ratio)
+      .def_readwrite("outrigger_L_over_B", &hull::DesignVariables::outrigger_L_over_B)
+      .def_readwrite("outrigger_B_over_T", &hull::DesignVariables::outrigger_B_over_T)
+      .def_readwrite("outrigger_offset_over_L", &hull::DesignVariables::outrigger_offset_over_L)
+      .def_readwrite("freeboard_over_T", &hull::DesignVariables::freeboard_over_T)
+      .def_readwrite("stations", &hull::DesignVariables::stations)
+      .def_readwrite("section_points", &hull::DesignVariables::section_points)
+      .def("validate",
+           [](const hull::DesignVariables& d) {
+             std::string error;
+             if (!d.IsValid(&error)) throw std::invalid_argument(error);
+           },
+           "Raises ValueError naming the first variable out of range and its rule.");
+
+  py::class_<hull::HullForm>(m, "Hull", "A hull: bodies of stations (x from AP, y half-breadth, z above base, m).")
+      .def_readonly("type", &hull::HullForm::type)
+      .def_readonly("draught_m", &hull::HullForm::draught_m, "[m] design waterline above the baseline")
+      .def_readonly("length_m", &hull::HullForm::length_m, "[m] waterline length of the main body")
+      .def_property_readonly("body_count", [](const hull::HullForm& h) { return h.bodies.size(); })
+      .def(
+          "stations",
+          [](const hull::HullForm& h, std::size_t body) {
+            if (body >= h.bodies.size()) throw py::index_error("body index out of range");
+            py::list out;
+            for (const auto& s : h.bodies[body].stations) {
+              py::dict d;
+              d["x_m"] = s.x_m;
+              d["y_m"] = Array(s.y_m);
+              d["z_m"] = Array(s.z_m);
+              out.append(d);
+            }
+            return out;
+          },
+          py::arg("body") = 0,
+          "Stations of one body aft to forward: dicts of x_m [m from AP], y_m [m half-breadth], z_m [m above base]")
+      .def_property_readonly("body_y_centre_m", [](const hull::HullForm& h) {
+        std::vector<double> y;
+        for (const auto& b : h.bodies) y.push_back(b.y_centre_m);
+        return Array(y);
+      });
+
+  py::class_<hull::MassProperties>(m, "MassProperties", "Mass properties of the whole vessel.")
+      .def(py::init<>())
+      .def_readwrite("mass_kg", &hull::MassProperties::mass_kg, "[kg]")
+      .def_readwrite("lcg_m_from_ap", &hull::MassProperties::lcg_m_from_ap, "[m] from AP")
+      .def_readwrite("kyy_m", &hull::MassProperties::kyy_m, "[m] pitch radius of gyration")
+      .def_readwrite("kg_m", &hull::MassProperties::kg_m, "[m] above the baseline");
+
+  m.def("generate_hull", &hull::GenerateHull, py::arg("variables"),
+        "The parametric hull at the requested displacement. ValueError for variables out of range or a "
+        "combination the section families cannot meet (the rule and the numbers).");
+
+  m.def(
+      "load_hull",
+      [](const std::string& config_file) {
+        io::YamlMap root = io::YamlMap::LoadFile(config_file);
+        const io::WaterOptions water = io::ParseWater(root);
+        return io::LoadHull(io::ParseHullConfig(root, water), config_file);
+      },
+      py::arg("config_file"),
+      "The hull of a config file's hull: block (parametric, offsets_csv or stl), as `hullopt hull` reads it.");
+
+  m.def(
+      "hydrostatics",
+      [](const hull::HullForm& h, double rho, double kg) { return HydrostaticsDict(hull::ComputeHydrostatics(h, rho, kg)); },
+      py::arg("hull"), py::arg("rho_kg_m3") = 1025.0, py::arg("kg_m") = 0.0,
+      "Hydrostatics at the design draught in water of density rho_kg_m3 [kg/m^3]; kg_m [m] for GM. A dict "
+      "with SI units in the key names (L_m, displacement_t, lcb_m_from_ap, gm_l_m, Cb, ...).");
+
+  m.def(
+      "mass_properties",
+      [](const hull::HullForm& h, const py::object& mass, const py::object& water) {
+        const io::WaterOptions w = WaterOf(water);
+        const hull::Hydrostatics hs = hull::ComputeHydrostatics(h, w.rho_kg_m3);
+        io::YamlMap root = RootOf("mass", mass);
+        io::YamlMap mm = root.MapOrEmpty("mass");
+        return io::ParseMassConfig(mm, hs);
+      },
+      py::arg("hull"), py::arg("mass") = py::none(), py::arg("water") = py::none(),
+      "Mass properties as a config's mass: block gives them (dict with mass_kg, lcg_m_from_ap, kyy_m, kg_m; "
+      "defaults: the displacement, LCB, 0.25 L, the draught).");
+
+  m.def(
+      "compute_raos",
+      [](const hull::HullForm& h, const hull::MassProperties& mass, double speed_m_s,
+         const std::vector<double>& omega, const py::object& solver, const py::object& water,
+         const std::string& name) {
+        const io::WaterOptions w = WaterOf(water);
+        io::YamlMap root = RootOf("solver", solver.is_none() ? py::object(py::dict()) : solver);
+        io::YamlMap sm = root.Map("solver");
+        const io::SolverConfig sc = io::ParseSolverConfig(sm, /*frequencies_required=*/false);
+        sm.Finish();
+        const sk::RaoSolverOptions o = io::RaoOptions(sc, name, sc.cs);
+        sk::RaoTable t;
+        {
+          py::gil_scoped_release release;
+          t = sk::ComputeRaos(h, mass, speed_m_s, w.rho_kg_m3, w.g_m_s2, omega, o,
+                              sk::TransientGreenKernelBuilder(sc.Force()));
+        }
+        return RaoDict(t);
+      },
+      py::arg("hull"), py::arg("mass"), py::arg("speed_m_s"), py::arg("omega_rad_s"),
+      py::arg("solver") = py::none(), py::arg("water") = py::none(), py::arg("name") = "hull",
+      "Heave X3/A [m/m] and pitch X5/(kA) [rad/rad] RAOs (complex, phase lead positive relative to the wave "
+      "crest at the CG) at wave frequencies omega_rad_s [rad/s] (increasing) and speed speed_m_s [m/s]. "
+      "solver: a dict as a config's solver: block (sections, panels, Cs, method, path, ...). Returns a dict "
+      "of NumPy arrays omega_rad_s, omega_e_rad_s, heave, pitch and a list of warnings.");
+
+  m.def(
+      "evaluate",
+      [](const py::dict& rao, const hull::HullForm& h, const hull::MassProperties& mass, const py::object& seas,
+         const py::object& msi, const py::object& water) {
+        const io::WaterOptions w = WaterOf(water);
+        const hull::Hydrostatics hs = hull::ComputeHydrostatics(h, w.rho_kg_m3);
+        YAML::Node root(YAML::NodeType::Map);
+        root["seas"] = ToYaml(seas);
+        if (!msi.is_none()) root["msi"] = ToYaml(msi);
+        io::YamlMap rm(root, "", kPythonSource, YAML::Node(YAML::NodeType::Map));
+        const std::vector<sk::SeaState> sea_list = io::ReadSeas(rm);
+        sk::EvaluationOptions options;
+        options.msi = io::ReadMsiOptions(rm);
+        rm.Finish();
+        const sk::DesignEvaluation ev = sk::EvaluateDesign(RaoFromDict(rao), ExtentOf(hs, mass), sea_list, {}, options);
+        py::list out;
+        for (const auto& s : ev.seas) {
+          py::dict d;
+          d["Hs_m"] = s.sea.Hs_m;
+          d["Tz_s"] = s.Tz_s;
+          d["Tp_s"] = s.Tp_s;
+          d["peak_omega_e_rad_s"] = s.peak_omega_e_rad_s;
+          d["truncated_wave_energy_fraction"] = s.truncated_wave_energy_fraction;
+          py::list pos;
+          for (const auto& p : s.positions) pos.append(PositionDict(p));
+          d["positions"] = pos;
+          d["mean"] = PositionDict(s.mean);
+          out.append(d);
+        }
+        return out;
+      },
+      py::arg("rao"), py::arg("hull"), py::arg("mass"), py::arg("seas"), py::arg("msi") = py::none(),
+      py::arg("water") = py::none(),
+      "rms vertical accelerations and MSI per head sea at the forward, LCG and transom positions and their "
+      "mean. seas: a list of dicts as a config's seas: list (Hs_m [m], Tz_s or Tp_s [s], spectrum, gamma); "
+      "msi: a dict as the msi: block. Returns one dict per sea with positions (rms_accel_g [g], msi_pct [%], "
+      "...) and mean.");
+
+  m.def(
+      "evaluation_frequencies", [](int count) { return Array(app::EvaluationFrequencies(count)); },
+      py::arg("count") = 60, "The wave-frequency grid [rad/s] `hullopt evaluate` uses (uniform 0.2–3 rad/s).");
+
+  py::class_<app::DesignCase>(m, "Design",
+                              "One design as `hullopt evaluate` and the campaigns read it from a config: hull, "
+                              "hydrostatics, mass, water, speed and solver.")
+      .def_readonly("name", &app::DesignCase::name)
+      .def_readonly("hull", &app::DesignCase::hull)
+      .def_readonly("mass", &app::DesignCase::mass)
+      .def_readonly("speed_m_s", &app::DesignCase::speed_m_s, "[m/s]")
+      .def_property_readonly("hydrostatics", [](const app::DesignCase& d) { return HydrostaticsDict(d.hydrostatics); })
+      .def(
+          "raos",
+          [](const app::DesignCase& d, const py::object& omega) {
+            const std::vector<double> w =
+                omega.is_none() ? app::EvaluationFrequencies() : omega.cast<std::vector<double>>();
+            sk::RaoTable t;
+            {
+              py::gil_scoped_release release;
+              t = app::ComputeDesignRaos(d, w);
+            }
+            return RaoDict(t);
+          },
+          py::arg("omega_rad_s") = py::none(),
+          "RAOs (as compute_raos) at omega_rad_s [rad/s], by default the evaluation grid.");
+
+  m.def(
+      "load_design",
+      [](const std::string& config_file, const std::string& name) {
+        io::YamlMap root = io::YamlMap::LoadFile(config_file);
+        return app::LoadDesignCase(root, config_file, name);
+      },
+      py::arg("config_file"), py::arg("name") = "design",
+      "The design of a hull config (hull, water, speed, solver, mass), read as `hullopt evaluate` reads it.");
+
+  m.def(
+      "run",
+      [](std::vector<std::string> args) {
+        CLI::App app{"hullopt"};
+        app.require_subcommand(1);
+        app::AddAllCommands(app);
+        std::reverse(args.begin(), args.end());  // CLI11 takes the arguments last-first
+        try {
+          py::gil_scoped_release release;
+          app.parse(args);
+        } catch (const CLI::ParseError& e) {
+          throw io::InputError(std::string("command line: ") + e.what());
+        }
+      },
+      py::arg("args"),
+      "Runs a hullopt command in-process, e.g. run(['optimize', 'campaign.yaml', '--out', 'out/c']). "
+      "Raises hullopt.InputError with the CLI's message for bad input.");
+}

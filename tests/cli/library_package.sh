@@ -1,0 +1,21 @@
+#!/usr/bin/env bash
+# The installed CMake package: `cmake --install` of this build into a temporary prefix, then the separate
+# project examples/library configured with find_package(hullopt), built and run.
+set -euo pipefail
+bin=$1
+build_dir=$(cd "$(dirname "$bin")/.." && pwd)
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+cmake --install "$build_dir" --prefix "$tmp/prefix" > "$tmp/install.log"
+test -f "$tmp/prefix/include/hullopt/hullopt.h"
+test -f "$tmp/prefix/lib/cmake/hullopt/hulloptConfig.cmake"
+# Only the headers the entry header reaches are installed: no io/ or app/ headers.
+if [ -d "$tmp/prefix/include/io" ] || [ -d "$tmp/prefix/include/app" ]; then
+  echo "private headers installed"; exit 1
+fi
+cmake -S examples/library -B "$tmp/build" -DCMAKE_PREFIX_PATH="$tmp/prefix" -DCMAKE_BUILD_TYPE=Release \
+  > "$tmp/configure.log" 2>&1 || { cat "$tmp/configure.log"; exit 1; }
+cmake --build "$tmp/build" -j2 > "$tmp/build.log" 2>&1 || { cat "$tmp/build.log"; exit 1; }
+out=$("$tmp/build/npl5b_msi")
+echo "$out"
+echo "$out" | grep -q "mean MSI"

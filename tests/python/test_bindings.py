@@ -1,0 +1,159 @@
+"""The Python module against the CLI: the same numbers to the last digit written, the same error messages.
+
+Run by ctest (python_bindings) with PYTHONPATH=<build>/python and HULLOPT_BIN=<build>/app/hullopt.
+"""
+import csv
+import os
+import subprocess
+import textwrap
+
+import numpy as np
+import pytest
+
+import hullopt
+
+BIN = os.environ["HULLOPT_BIN"]
+ROOT = os.environ.get("HULLOPT_SOURCE_DIR", os.getcwd())
+
+# The NPL 5b-like catamaran of Table 1 (configs/davis-holloway-2003/hull02_NPL5b.yaml).
+NPL5B = dict(type="catamaran", section_style="round_bilge", displacement_t=1000, L_over_B=11.0, B_over_T=2.0,
+             Cb=0.40, Cp=0.69, Cwp=0.76, LCB_pct_L=-6.4, LCF_pct_L=-8.3, transom_immersion=0.3,
+             transom_beam_ratio=0.6, keel_rise=0.3, spacing_over_L=0.25)
+SPEED_M_S = 40 * (1852.0 / 3600.0)  # 40 kn, as io/speed_config converts it
+OMEGA = [0.4, 0.6, 0.8, 1.0, 1.2, 1.5, 2.0]
+SOLVER = {"sections": 20, "panels": 8, "Cs": 0.065}
+
+
+def hull_yaml(extra=""):
+    params = "\n".join(f"    {k}: {v}" for k, v in NPL5B.items())
+    return f"hull:\n  parametric:\n{params}\nwater: {{ rho_kg_m3: 1025, g_m_s2: 9.81 }}\nspeed: {{ kn: 40 }}\n{extra}"
+
+
+def run_cli(*args):
+    return subprocess.run([BIN, *args], capture_output=True, text=True, cwd=ROOT)
+
+
+def csv_rows(path):
+    with open(path) as f:
+        return list(csv.DictReader(line for line in f if not line.startswith("#")))
+
+
+def g10(x):
+    """A number as rao.csv writes it (ostream, precision 10)."""
+    return f"{x:.10g}"
+
+
+def g6(x):
+    """A number as msi.csv writes it (ostream, default precision 6)."""
+    return f"{x:.6g}"
+
+
+def test_npl5b_raos_match_the_cli_to_the_last_digit(tmp_path):
+    freqs = ", ".join(str(w) for w in OMEGA)
+    cfg = tmp_path / "npl5b.yaml"
+    cfg.write_text(hull_yaml(textwrap.dedent(f"""\
+        solver:
+          sections: {SOLVER['sections']}
+          panels: {SOLVER['panels']}
+          Cs: {SOLVER['Cs']}
+          frequencies: {{ omega_rad_s: [{freqs}] }}
+        """)))
+    r = run_cli("rao", str(cfg), "--out", str(tmp_path / "rao"))
+    assert r.returncode == 0, r.stderr
+    rows = csv_rows(tmp_path / "rao" / "rao.csv")
+
+    hull = hullopt.generate_hull(hullopt.DesignVariables(**NPL5B))
+    mass = hullopt.mass_properties(hull)
+    rao = hullopt.compute_raos(hull, mass, SPEED_M_S, OMEGA, solver=SOLVER)
+    assert isinstance(rao["heave"], np.ndarray) and rao["heave"].dtype == np.complex128
+    assert len(rows) == len(OMEGA)
+    for i, row in enumerate(rows):
+        assert row["omega_e_rad_s"] == g10(rao["omega_e_rad_s"][i])
+        assert row["heave_amp"] == g10(abs(rao["heave"][i]))
+        assert row["heave_phase_deg"] == g10(np.degrees(np.angle(rao["heave"][i])))
+        assert row["pitch_amp"] == g10(abs(rao["pitch"][i]))
+        assert row["pitch_phase_deg"] == g10(np.degrees(np.angle(rao["pitch"][i])))
+
+
+def test_npl5b_msi_matches_evaluate(tmp_path):
+    hull_cfg = tmp_path / "npl5b.yaml"
+    hull_cfg.write_text(hull_yaml(f"solver: {{ sections: {SOLVER['sections']}, panels: {SOLVER['panels']} }}\n"))
+    ev_cfg = tmp_path / "evaluate.yaml"
+    ev_cfg.write_text(textwrap.dedent(f"""\
+        designs:
+          - {{ config: {hull_cfg}, name: npl5b, Cs: {SOLVER['Cs']} }}
+        seas:
+          - {{ Hs_m: 3.0, Tz_s: 7.5 }}
+          - {{ Hs_m: 1.5, Tz_s: 6.25 }}
+        """))
+    r = run_cli("evaluate", str(ev_cfg), "--out", str(tmp_path / "ev"))
+    assert r.returncode == 0, r.stderr
+    rows = [row for row in csv_rows(tmp_path / "ev" / "msi.csv") if row["design"] == "npl5b"]
+    assert rows, "no msi.csv rows for the design"
+
+    hull = hullopt.generate_hull(hullopt.DesignVariables(**NPL5B))
+    mass = hullopt.mass_properties(hull)
+    rao = hullopt.compute_raos(hull, mass, SPEED_M_S, hullopt.evaluation_frequencies(), solver=SOLVER)
+    seas = hullopt.evaluate(rao, hull, mass, seas=[{"Hs_m": 3.0, "Tz_s": 7.5}, {"Hs_m": 1.5, "Tz_s": 6.25}])
+    checked = 0
+    for row in rows:
+        sea = next(s for s in seas if g6(s["Hs_m"]) == row["Hs_m"])
+        pos = sea["mean"] if row["position"] == "mean" else next(
+            p for p in sea["positions"] if p["position"] == row["position"])
+        assert row["msi_pct"] == g6(pos["msi_pct"]), row
+        assert row["rms_accel_g"] == g6(pos["rms_accel_g"]), row
+        checked += 1
+    assert checked >= 8  # 2 seas x (3 positions + mean)
+
+
+def test_design_from_a_config_matches_the_physics_calls(tmp_path):
+    cfg = tmp_path / "npl5b.yaml"
+    cfg.write_text(hull_yaml(f"solver: {{ sections: 20, panels: 8, Cs: 0.065 }}\n"))
+    d = hullopt.load_design(str(cfg), "npl5b")
+    assert d.speed_m_s == SPEED_M_S
+    a = d.raos(OMEGA)
+    hull = hullopt.generate_hull(hullopt.DesignVariables(**NPL5B))
+    b = hullopt.compute_raos(hull, hullopt.mass_properties(hull), SPEED_M_S, OMEGA, solver=SOLVER)
+    np.testing.assert_array_equal(a["heave"], b["heave"])
+    np.testing.assert_array_equal(a["pitch"], b["pitch"])
+
+
+def test_hydrostatics_meets_the_displacement():
+    hull = hullopt.generate_hull(hullopt.DesignVariables(**NPL5B))
+    hs = hullopt.hydrostatics(hull)
+    # The generator scales to the target displacement to round-off (docs/hull-generator.md).
+    assert hs["displacement_t"] == pytest.approx(1000.0, rel=1e-9)
+    assert hs["L_m"] / hs["B_m"] == pytest.approx(11.0, rel=0.02)  # Table 1 tolerance of the generator
+
+
+def test_bad_variable_raises_with_the_cli_message(tmp_path):
+    bad = dict(NPL5B, Cp=1.0)
+    with pytest.raises(ValueError) as py_err:
+        hullopt.generate_hull(hullopt.DesignVariables(**bad))
+    cfg = tmp_path / "bad.yaml"
+    cfg.write_text(hull_yaml().replace("Cp: 0.69", "Cp: 1.0"))
+    r = run_cli("hull", str(cfg), "--out", str(tmp_path / "h"))
+    assert r.returncode == 1
+    # The library names the variable ("Cp = 1: rule"), the CLI the key and line; the rule is the same text.
+    variable, rule = str(py_err.value).split(": ", 1)
+    assert variable == "Cp = 1"
+    assert "key 'hull.parametric.Cp' = 1.0: " + rule in r.stderr, (str(py_err.value), r.stderr)
+    # Read through the config readers, the message is the CLI's line itself.
+    with pytest.raises(hullopt.InputError) as cfg_err:
+        hullopt.load_hull(str(cfg))
+    assert r.stderr.strip() == "hullopt: error: " + str(cfg_err.value)
+
+
+def test_unknown_solver_key_is_named():
+    hull = hullopt.generate_hull(hullopt.DesignVariables(**NPL5B))
+    with pytest.raises(hullopt.InputError, match="sectoins"):
+        hullopt.compute_raos(hull, hullopt.mass_properties(hull), SPEED_M_S, OMEGA, solver={"sectoins": 20})
+
+
+def test_run_a_command_in_process(tmp_path):
+    cfg = tmp_path / "npl5b.yaml"
+    cfg.write_text(hull_yaml())
+    hullopt.run(["hull", str(cfg), "--out", str(tmp_path / "h")])
+    assert (tmp_path / "h" / "hydrostatics.json").exists()
+    with pytest.raises(hullopt.InputError):
+        hullopt.run(["hull", str(tmp_path / "missing.yaml"), "--out", str(tmp_path / "h2")])
