@@ -16,11 +16,7 @@ namespace hullopt::app {
 LoadedCampaign LoadCampaign(const std::string& config_file, io::CampaignCommand command) {
   LoadedCampaign out;
   io::YamlMap root = io::YamlMap::LoadFile(config_file);
-  try {
-    out.raw = YAML::LoadFile(config_file);
-  } catch (const YAML::Exception& e) {
-    throw io::InputError(config_file + ": " + e.what());
-  }
+  out.raw = YAML::Clone(root.raw());
   std::optional<io::YamlMap> block;
   out.config = io::ReadCampaignConfig(root, out.raw, command, &block);
   out.evaluator = MakeEvaluator(root, *block, out.config.definition);
@@ -37,6 +33,11 @@ LoadedCampaign LoadCampaign(const std::string& config_file, io::CampaignCommand 
 }
 
 int ResolveThreads(int requested) {
+  // More threads than this is no faster on any machine hullopt targets, and each costs a stack.
+  constexpr int kMaxThreads = 256;
+  if (requested < 0 || requested > kMaxThreads)
+    throw io::InputError("--threads " + std::to_string(requested) + ": must lie in [0, " +
+                         std::to_string(kMaxThreads) + "] (0 = the OpenMP default)");
   if (requested > 0) return requested;
 #ifdef _OPENMP
   return omp_get_max_threads();

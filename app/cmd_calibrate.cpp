@@ -99,7 +99,7 @@ void RunCalibrate(const std::string& config_file, const std::string& out_dir) {
                 cases[pk.case_index].label.c_str(), pk.quantity.c_str(), pk.measured.value, pk.before.value,
                 100 * pk.RelativeErrorBefore(), pk.after.value, 100 * pk.RelativeErrorAfter());
   }
-  for (const auto& w : r.warnings) std::cout << "  warning: " << w << "\n";
+  for (const auto& w : r.warnings) std::cerr << "hullopt: warning: calibration: " << w << "\n";
   std::cout << "wrote " << out_dir << "/{calibration.json, calibration_report.txt, calibration_plot.svg";
   for (const auto& s : snippets) std::cout << ", " << s;
   std::cout << ", config.resolved.yaml, VERSION}\n";

@@ -37,6 +37,7 @@
 #include "io/rao_table_csv.h"
 #include "io/seas_config.h"
 #include "io/yaml_map.h"
+#include "seakeeping/motions/rao_checks.h"
 #include "seas/design_evaluation.h"
 
 namespace hullopt::app {
@@ -106,6 +107,7 @@ DesignInput ReadDesign(io::YamlMap& m, const std::string& config_file, double g,
   std::string error;
   if (!in.design.hull.IsValid(&error)) throw io::InputError(in.where + ": " + error);
   in.design.rao = io::ReadRaoTableCsv(csv, g);
+  in.design.rao.warnings = sk::RaoResonanceWarnings(in.design.rao);
   return in;
 }
 
@@ -200,6 +202,8 @@ void Run(const std::string& config_file, const std::string& out_dir) {
     try {
       in.design.evaluation = sk::EvaluateDesign(in.design.rao, in.design.hull, spectra, points, options);
     } catch (const std::invalid_argument& e) {
+      throw io::InputError(in.where + ": design '" + in.design.name + "': " + e.what());
+    } catch (const std::domain_error& e) {
       throw io::InputError(in.where + ": design '" + in.design.name + "': " + e.what());
     }
     designs.push_back(in.design);

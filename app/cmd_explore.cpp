@@ -39,6 +39,8 @@ struct ExploreCliOptions {
 void RunExplore(const ExploreCliOptions& o) {
   const auto wall0 = std::chrono::steady_clock::now();
   LoadedCampaign lc = LoadCampaign(o.config, io::CampaignCommand::kExplore);
+  CheckOutputDirCommand(o.out, "explore");
+  if (o.chunk < 0) throw io::InputError("--chunk " + std::to_string(o.chunk) + ": must be >= 0 (0 = 2 x threads)");
   const opt::CampaignDefinition& def = lc.config.definition;
   opt::Evaluator& evaluator = *lc.evaluator;
   const int threads = ResolveThreads(o.threads);

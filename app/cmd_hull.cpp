@@ -11,6 +11,7 @@
 #include "io/hull_config.h"
 #include "io/hydrostatics_json.h"
 #include "io/input_error.h"
+#include "io/motion_config.h"
 #include "io/offsets_csv.h"
 #include "io/speed_config.h"
 #include "io/water_config.h"
@@ -29,27 +30,27 @@ void RunHull(const std::string& config, const std::string& out_dir) {
   const io::HullOptions hull_opts = io::ParseHullConfig(root, water);
   bool has_speed = false;
   const io::SpeedOptions speed = io::ParseSpeed(root, false, &has_speed);
-  double kg_m = 0.0;
-  {
-    io::YamlMap mass = root.MapOrEmpty("mass");
-    kg_m = mass.Number("kg_m", 0.0);
-    if (kg_m < 0.0) mass.Fail("kg_m", "must be >= 0 m above the baseline");
-    mass.Skip("lcg_m_from_ap");
-    mass.Skip("kyy_m");
-    mass.Finish();
-  }
   for (const char* k : kOtherCommandsKeys) root.Skip(k);
-  root.Finish();
 
   const hull::HullForm hull = io::LoadHull(hull_opts, config);
   hull::Hydrostatics hs;
   try {
-    hs = hull::ComputeHydrostatics(hull, water.rho_kg_m3, kg_m);
+    hs = hull::ComputeHydrostatics(hull, water.rho_kg_m3, hull.draught_m);
   } catch (const std::logic_error& e) {
     throw io::InputError(config + ": key 'hull': " + e.what());
   }
+  // The mass block as the motion commands read it (KG defaults to the draught), with the same checks.
+  std::vector<std::string> warnings;
+  {
+    io::YamlMap mass = root.MapOrEmpty("mass");
+    const hull::MassProperties m = io::ParseMassConfig(mass, hs, &warnings);
+    hs = hull::ComputeHydrostatics(hull, water.rho_kg_m3, m.kg_m);
+  }
+  root.Finish();
   PrepareOutputDir(out_dir, "hull", config, root.resolved());
+  for (const auto& w : warnings) std::cerr << "hullopt: warning: " << w << "\n";
   io::HydrostaticsReport rep;
+  rep.warnings = warnings;
   rep.hs = hs;
   rep.rho_kg_m3 = water.rho_kg_m3;
   rep.g_m_s2 = water.g_m_s2;

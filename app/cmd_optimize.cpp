@@ -60,6 +60,7 @@ nlohmann::json RecordJson(const opt::EvaluationRecord& rec, long evaluation,
 void RunOptimize(const OptimizeOptions& o) {
   const auto wall0 = std::chrono::steady_clock::now();
   LoadedCampaign lc = LoadCampaign(o.config, io::CampaignCommand::kOptimize);
+  CheckOutputDirCommand(o.out, "optimize");
   const opt::CampaignDefinition& def = lc.config.definition;
   opt::Evaluator& evaluator = *lc.evaluator;
   const int threads = ResolveThreads(o.threads);

@@ -28,7 +28,8 @@ void RunRao(const std::string& config_file, const std::string& out_dir) {
   const io::WaterOptions water = io::ParseWater(root);
   const io::HullOptions hull_opts = io::ParseHullConfig(root, water);
   const io::SpeedOptions speed = io::ParseSpeed(root, true);
-  const hull::HullForm hull = io::LoadHull(hull_opts, config_file);
+  std::vector<std::string> input_warnings;
+  const hull::HullForm hull = io::LoadHull(hull_opts, config_file, &input_warnings);
   const std::string hull_name = hull_opts.file.empty()
                                     ? std::filesystem::path(config_file).stem().string()
                                     : std::filesystem::path(hull_opts.file).stem().string();
@@ -52,7 +53,7 @@ void RunRao(const std::string& config_file, const std::string& out_dir) {
     throw io::InputError("hull '" + hull_name + "': " + e.what());
   }
   auto mass_map = root.MapOrEmpty("mass");
-  const hull::MassProperties mass = io::ParseMassConfig(mass_map, hs);
+  const hull::MassProperties mass = io::ParseMassConfig(mass_map, hs, &input_warnings);
   root.Finish();
   const double U = speed.MetresPerSecond(hs.L_m, water.g_m_s2);
   const sk::StripKernelBuilder builder = kernel_kind == "impulsive"
@@ -68,6 +69,7 @@ void RunRao(const std::string& config_file, const std::string& out_dir) {
   } catch (const std::invalid_argument& e) {
     throw io::InputError(std::string("cannot compute RAOs: ") + e.what());
   }
+  t.warnings.insert(t.warnings.begin(), input_warnings.begin(), input_warnings.end());
   for (const auto& w : t.warnings) std::fprintf(stderr, "hullopt: warning: hull '%s': %s\n", hull_name.c_str(), w.c_str());
   PrepareOutputDir(out_dir, "rao", config_file, root.resolved());
   std::ostringstream fn;

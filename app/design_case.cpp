@@ -7,6 +7,7 @@
 #include "io/speed_config.h"
 #include "seakeeping/motions/head_sea_ship_model.h"
 #include "seakeeping/motions/periodic_motion_solver.h"
+#include "seakeeping/motions/rao_checks.h"
 
 namespace hullopt::app {
 namespace {
@@ -48,7 +49,7 @@ DesignCase LoadDesignCase(io::YamlMap& root, const std::string& config_file, con
   d.water = io::ParseWater(root);
   const io::HullOptions hull_opts = io::ParseHullConfig(root, d.water);
   const io::SpeedOptions speed = read_speed ? io::ParseSpeed(root, true) : io::SpeedOptions{};
-  d.hull = io::LoadHull(hull_opts, config_file);
+  d.hull = io::LoadHull(hull_opts, config_file, &d.input_warnings);
   if (root.Has("solver")) {
     io::YamlMap s = root.Map("solver");
     d.has_frequencies = s.Has("frequencies");
@@ -62,7 +63,7 @@ DesignCase LoadDesignCase(io::YamlMap& root, const std::string& config_file, con
     throw io::InputError(config_file + ": design '" + name + "': " + e.what());
   }
   io::YamlMap mass_map = root.MapOrEmpty("mass");
-  d.mass = io::ParseMassConfig(mass_map, d.hydrostatics);
+  d.mass = io::ParseMassConfig(mass_map, d.hydrostatics, &d.input_warnings);
   if (read_speed) d.speed_m_s = speed.MetresPerSecond(d.hydrostatics.L_m, d.water.g_m_s2);
   return d;
 }
@@ -83,7 +84,10 @@ sk::RaoTable DesignRaosFromKernel(const DesignCase& d, const sk::StripKernel& ke
   return Guard(d, [&] {
     const sk::HeadSeaShipModel model(kernel, d.mass, SolverOptions(d, cs).motion);
     sk::RaoTable t = sk::SolvePeriodicRaos(model, omega_rad_s);
-    t.warnings = sk::StripKernelWarnings(kernel);
+    sk::RequireFiniteRaos(t);
+    t.warnings = d.input_warnings;
+    for (const auto& w : sk::StripKernelWarnings(kernel)) t.warnings.push_back(w);
+    for (const auto& w : sk::RaoResonanceWarnings(t)) t.warnings.push_back(w);
     return t;
   });
 }
@@ -92,8 +96,10 @@ sk::RaoTable ComputeDesignRaos(const DesignCase& d, const std::vector<double>& o
                                double cs_override) {
   const double cs = cs_override >= 0.0 ? cs_override : d.solver.cs;
   return Guard(d, [&] {
-    return sk::ComputeRaos(d.hull, d.mass, d.speed_m_s, d.water.rho_kg_m3, d.water.g_m_s2, omega_rad_s,
-                           SolverOptions(d, cs), sk::TransientGreenKernelBuilder(d.solver.Force()));
+    sk::RaoTable t = sk::ComputeRaos(d.hull, d.mass, d.speed_m_s, d.water.rho_kg_m3, d.water.g_m_s2, omega_rad_s,
+                                     SolverOptions(d, cs), sk::TransientGreenKernelBuilder(d.solver.Force()));
+    t.warnings.insert(t.warnings.begin(), d.input_warnings.begin(), d.input_warnings.end());
+    return t;
   });
 }
 

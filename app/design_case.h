@@ -22,6 +22,9 @@ struct DesignCase {
   hull::HullForm hull;
   hull::Hydrostatics hydrostatics;
   hull::MassProperties mass;
+  /// Plausibility warnings of the hull and mass (parametric_hull/plausibility.h), carried into every RAO
+  /// table computed for this design and so into every output.
+  std::vector<std::string> input_warnings;
   io::WaterOptions water;
   double speed_m_s = 0.0;      ///< [m/s]
   io::SolverConfig solver;     ///< Cs, sections, panels, path ...

@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <numeric>
+#include <stdexcept>
 
 #include "app/design_case.h"
 #include "io/input_error.h"
@@ -35,9 +36,21 @@ class MsiEvaluator : public opt::Evaluator {
       r.error = e.what();
       return r;
     }
-    const sk::RaoTable rao = ComputeDesignRaos(d, EvaluationFrequencies());
+    sk::RaoTable rao;
+    sk::DesignEvaluation ev;
+    try {  // a non-finite RAO or response is refused where it is computed: this design is not produced
+      rao = ComputeDesignRaos(d, EvaluationFrequencies());
+      ev = sk::EvaluateDesign(rao, d.Extent(), spectra_, {}, eval_);
+    } catch (const io::InputError& e) {
+      r.produced = false;
+      r.error = e.what();
+      return r;
+    } catch (const std::domain_error& e) {
+      r.produced = false;
+      r.error = e.what();
+      return r;
+    }
     for (const auto& w : rao.warnings) r.warning += (r.warning.empty() ? "" : "; ") + w;
-    const sk::DesignEvaluation ev = sk::EvaluateDesign(rao, d.Extent(), spectra_, {}, eval_);
     double sum = 0, wsum = 0;
     for (std::size_t i = 0; i < ev.seas.size(); ++i) {
       const auto& s = ev.seas[i];
@@ -132,7 +145,7 @@ std::unique_ptr<opt::Evaluator> MakeMsiEvaluator(io::YamlMap& root, io::YamlMap&
   if (!(kg_over_T > 0 && kg_over_T < 10)) mass.Fail("kg_over_T", "must be within 0..10");
   mass.Finish();
   // The base design is read (and checked) once now, so a bad base config fails before any evaluation.
-  YAML::Node raw = YAML::LoadFile(root.file());
+  YAML::Node raw = YAML::Clone(root.raw());
   if (!raw["hull"] || !raw["hull"]["parametric"])
     throw io::InputError(root.file() + ": key 'hull.parametric': a campaign needs a parametric base hull");
   raw.remove("mass");

@@ -12,8 +12,25 @@ std::string OutPath(const std::string& dir, const std::string& name) {
   return (std::filesystem::path(dir) / name).string();
 }
 
+void CheckOutputDirCommand(const std::string& dir, const std::string& command) {
+  std::ifstream in(OutPath(dir, "config.resolved.yaml"));
+  std::string first;
+  if (!in || !std::getline(in, first)) return;
+  // Header written below: "# hullopt <version> — <command> <config>".
+  const std::string sep = " — ";
+  const auto at = first.find(sep);
+  if (first.rfind("# hullopt ", 0) != 0 || at == std::string::npos) return;
+  const std::string rest = first.substr(at + sep.size());
+  const std::string earlier = rest.substr(0, rest.find(' '));
+  if (earlier != command)
+    throw io::InputError(dir + ": this folder holds the output of 'hullopt " + earlier +
+                         "' (see its config.resolved.yaml); 'hullopt " + command +
+                         "' will not write over it: use another --out folder");
+}
+
 void PrepareOutputDir(const std::string& dir, const std::string& command, const std::string& config_file,
                       const YAML::Node& resolved) {
+  CheckOutputDirCommand(dir, command);
   std::error_code ec;
   std::filesystem::create_directories(dir, ec);
   if (ec) throw io::InputError(dir + ": cannot create output folder: " + ec.message());

@@ -11,6 +11,11 @@ namespace hullopt::app {
 void PrepareOutputDir(const std::string& dir, const std::string& command, const std::string& config_file,
                       const YAML::Node& resolved);
 
+/// Throws io::InputError if dir holds the output of a different hullopt command (read from the header of its
+/// config.resolved.yaml), naming that command; a folder of the same command (a re-run or a resume) passes.
+/// Called by PrepareOutputDir, and by the campaigns before they open their journal.
+void CheckOutputDirCommand(const std::string& dir, const std::string& command);
+
 /// Path join: dir + "/" + name.
 std::string OutPath(const std::string& dir, const std::string& name);
 

@@ -2,6 +2,10 @@
 
 namespace hullopt::io {
 
+// Documented maximum of explore samples and optimizer evaluations (docs/bad-inputs.md): a campaign of this size
+// already takes days at ~1 s per design.
+constexpr int kMaxSamples = 1000000;
+
 CampaignConfig ReadCampaignConfig(YamlMap& root, const YAML::Node& raw_root, CampaignCommand command,
                                   std::optional<YamlMap>* block_out) {
   CampaignConfig cfg;
@@ -23,20 +27,21 @@ CampaignConfig ReadCampaignConfig(YamlMap& root, const YAML::Node& raw_root, Cam
       b.Skip(k);
     cfg.explore.samples = b.Integer("samples", cfg.explore.samples);
     cfg.explore.method = b.Choice("method", {"sobol", "lhs"}, cfg.explore.method);
-    if (cfg.explore.samples < 1) b.Fail("samples", "must be >= 1");
+    if (cfg.explore.samples < 1 || cfg.explore.samples > kMaxSamples)
+      b.Fail("samples", "must lie in [1, " + std::to_string(kMaxSamples) + "]");
   } else {
     b.Skip("samples");
     b.Skip("method");
     d.algorithm = b.String("algorithm", d.algorithm);
-    d.stopping.max_evaluations = b.Integer("max_evaluations", d.stopping.max_evaluations);
+    d.stopping.max_evaluations = b.Integer("max_evaluations", d.stopping.max_evaluations, 1, kMaxSamples);
     d.stopping.xtol_rel = b.Number("xtol_rel", d.stopping.xtol_rel);
     d.stopping.ftol_rel = b.Number("ftol_rel", d.stopping.ftol_rel);
-    d.starts = b.Integer("starts", d.starts);
+    d.starts = b.Integer("starts", d.starts, 1, 1000);
     d.penalty_weight = b.Number("penalty_weight", d.penalty_weight);
     if (b.Has("polish")) {
       YamlMap polish = b.Map("polish");
       d.polish_algorithm = polish.String("algorithm");
-      d.polish_max_evaluations = polish.Integer("max_evaluations", d.polish_max_evaluations);
+      d.polish_max_evaluations = polish.Integer("max_evaluations", d.polish_max_evaluations, 1, kMaxSamples);
       polish.Finish();
     } else {
       b.Skip("polish");

@@ -9,6 +9,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "io/finite_json.h"
 #include "io/input_error.h"
 
 namespace hullopt::io {
@@ -25,6 +26,7 @@ std::string TextHash(const std::string& text) {
 }
 
 void WriteJson(const std::string& path, const nlohmann::json& json) {
+  RequireFiniteJson(json, path);
   std::ofstream out(path);
   if (!out) throw InputError(path + ": cannot write");
   out << json.dump(2) << "\n";

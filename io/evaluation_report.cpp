@@ -6,6 +6,7 @@
 #include <fstream>
 
 #include "hullopt/version.h"
+#include "io/finite_json.h"
 #include "io/input_error.h"
 #include "io/seakeeping_plots.h"
 #include "io/svg_plot.h"
@@ -54,6 +55,10 @@ void WriteMsiCsv(const std::string& path, const std::vector<EvaluatedDesign>& de
   for (const auto& d : designs) {
     for (const auto& s : d.evaluation.seas) {
       auto row = [&](const sk::PositionResult& r) {
+        for (double v : {s.sea.Hs_m, s.Tz_s, r.rms_accel_g, r.msi_pct})
+          if (!std::isfinite(v))
+            throw InputError(path + ": design '" + d.name + "', position '" + r.position +
+                             "': a non-finite acceleration or MSI; refusing to write it");
         f << CsvText(d.name) << ',' << Csv(s.sea.Hs_m) << ',' << Csv(s.Tz_s) << ',' << CsvText(r.position)
           << ',' << Csv(r.x_from_cg_m) << ',' << Csv(r.rms_accel_g) << ',' << Csv(r.msi_pct) << '\n';
       };
@@ -149,6 +154,7 @@ std::vector<std::string> WriteEvaluationOutputs(const std::string& dir,
   const auto warnings = EvaluationWarnings(designs, report);
   {
     const std::string path = Join(dir, "summary.json");
+    RequireFiniteJson(EvaluationSummaryJson(designs, options, warnings), path);
     std::ofstream f(path);
     if (!f) throw InputError(path + ": cannot write summary.json");
     f << EvaluationSummaryJson(designs, options, warnings).dump(2) << "\n";

@@ -2,6 +2,7 @@
 
 #include <stdexcept>
 
+#include "io/hull_plausibility.h"
 #include "io/offsets_csv.h"
 #include "io/stl_reader.h"
 #include "parametric_hull/hull_generator.h"
@@ -12,6 +13,8 @@ namespace {
 
 // Default stations for slicing an STL.
 constexpr int kDefaultStlStations = 41;
+// Resampled or sliced stations: the paper's hulls need 21-41; beyond this the offsets file only grows.
+constexpr int kMaxStations = 1001;
 
 hull::DesignVariables ParseParametric(YamlMap& p, const WaterOptions& water) {
   hull::DesignVariables d;
@@ -108,20 +111,27 @@ HullOptions ParseHullConfig(YamlMap& root, const WaterOptions& water) {
     h.Fail("spacing_m", "must be > 0 m (demihull centreline spacing) when hulls = 2");
   if (o.hulls == 1 && o.spacing_m != 0.0) h.Fail("spacing_m", "only applies to hulls = 2");
   o.stations = h.Integer("stations", o.source == HullOptions::Source::kStl ? kDefaultStlStations : 0);
-  if (o.stations != 0 && o.stations < 3) h.Fail("stations", "must be 0 (keep the file's stations) or >= 3");
+  if (o.stations != 0 && (o.stations < 3 || o.stations > kMaxStations))
+    h.Fail("stations", "must be 0 (keep the file's stations) or in [3, " + std::to_string(kMaxStations) + "]");
   o.length_m = h.Number("length_m", 0.0);
   if (o.length_m < 0.0) h.Fail("length_m", "must be >= 0 m (0 = span of the wetted stations)");
   h.Finish();
   return o;
 }
 
-hull::HullForm LoadHull(const HullOptions& o, const std::string& config_file) {
+hull::HullForm LoadHull(const HullOptions& o, const std::string& config_file, std::vector<std::string>* warnings) {
+  auto keep = [&](const std::vector<std::string>& w) {
+    if (warnings) warnings->insert(warnings->end(), w.begin(), w.end());
+  };
   if (o.source == HullOptions::Source::kParametric) {
+    hull::HullForm h;
     try {
-      return hull::GenerateHull(o.design);
+      h = hull::GenerateHull(o.design);
     } catch (const std::logic_error& e) {  // invalid_argument and domain_error
       throw InputError(config_file + ": key 'hull.parametric': " + e.what());
     }
+    keep(CheckHull(h, config_file + ": key 'hull.parametric'"));
+    return h;
   }
   hull::HullForm h;
   h.draught_m = o.draught_m;
@@ -138,6 +148,7 @@ hull::HullForm LoadHull(const HullOptions& o, const std::string& config_file) {
   body.y_centre_m = o.hulls == 2 ? 0.5 * o.spacing_m : 0.0;
   h.bodies = {body};
   if (o.stations > 0 && o.source == HullOptions::Source::kOffsetsCsv) h = hull::Resample(h, o.stations);
+  keep(CheckHull(h, o.file));
   return h;
 }
 

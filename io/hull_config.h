@@ -12,6 +12,7 @@
 //     length_m: 0            # waterline length L for coefficients (0 = span of the wetted stations)
 // File paths are relative to the working directory.
 #include <string>
+#include <vector>
 
 #include "io/water_config.h"
 #include "io/yaml_map.h"
@@ -40,6 +41,9 @@ HullOptions ParseHullConfig(YamlMap& root, const WaterOptions& water);
 
 /// Builds or reads the hull. File errors are InputError with file and line; a parametric combination that
 /// cannot be met becomes InputError "key 'hull.parametric': <rule>" (where = config file for messages).
-hull::HullForm LoadHull(const HullOptions& options, const std::string& config_file);
+/// The plausibility rules (io/hull_plausibility.h) are applied to every hull: refusals throw, warnings are
+/// appended to *warnings.
+hull::HullForm LoadHull(const HullOptions& options, const std::string& config_file,
+                        std::vector<std::string>* warnings = nullptr);
 
 }  // namespace hullopt::io

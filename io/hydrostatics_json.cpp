@@ -4,6 +4,7 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
+#include "io/finite_json.h"
 #include "io/input_error.h"
 
 namespace hullopt::io {
@@ -62,6 +63,8 @@ void WriteHydrostaticsJson(const std::string& path, const hull::HullForm& hull, 
   j["gm_t_m"] = h.gm_t_m;
   j["wetted_surface_m2"] = h.wetted_surface_m2;
   j["heave_stiffness_N_per_m"] = r.rho_kg_m3 * r.g_m_s2 * h.awp_m2;
+  if (!r.warnings.empty()) j["warnings"] = r.warnings;
+  RequireFiniteJson(j, path);
   std::ofstream out(path);
   if (!out) throw InputError(path + ": cannot write hydrostatics file");
   out << j.dump(2) << "\n";

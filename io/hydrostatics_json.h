@@ -5,6 +5,7 @@
 // quantities with units in their names.
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "parametric_hull/hull_form.h"
 #include "parametric_hull/hydrostatics.h"
@@ -16,6 +17,7 @@ struct HydrostaticsReport {
   double rho_kg_m3 = 1025.0;
   double g_m_s2 = 9.81;
   std::optional<double> speed_m_s;  ///< [m/s]; Fr is written as null without it
+  std::vector<std::string> warnings;  ///< plausibility warnings, written as "warnings"
 };
 
 /// Writes the JSON file; throws InputError if it cannot be written.

@@ -2,8 +2,16 @@
 
 #include <sstream>
 
+#include "parametric_hull/plausibility.h"
+
 namespace hullopt::io {
 namespace {
+
+// Documented maxima (docs/bad-inputs.md): far above any converged setting (the paper uses 40 x 14 and 20-60
+// frequencies), low enough that the kernel fits in memory and a run ends in hours, not weeks.
+constexpr int kMaxSections = 400;
+constexpr int kMaxPanels = 100;
+constexpr int kMaxFrequencies = 1000;
 
 sk::FrequencySpec ParseFrequencies(YamlMap& f) {
   using Q = sk::FrequencySpec::Quantity;
@@ -23,7 +31,8 @@ sk::FrequencySpec ParseFrequencies(YamlMap& f) {
       if (key == qn) q = qq;
     const double from = r.Number("from"), to = r.Number("to");
     const int count = r.Integer("count");
-    if (count < 1) r.Fail("count", "must be >= 1");
+    if (count < 1 || count > kMaxFrequencies)
+      r.Fail("count", "must lie in [1, " + std::to_string(kMaxFrequencies) + "]");
     if (!(from > 0.0)) r.Fail("from", "must be > 0");
     if (!(to > 0.0)) r.Fail("to", "must be > 0");
     r.Finish();
@@ -35,6 +44,8 @@ sk::FrequencySpec ParseFrequencies(YamlMap& f) {
       spec.quantity = q;
       spec.values = f.Numbers(key);
       bad_key = key;
+      if (spec.values.size() > static_cast<std::size_t>(kMaxFrequencies))
+        f.Fail(key, std::to_string(spec.values.size()) + " frequencies: at most " + std::to_string(kMaxFrequencies));
     }
   }
   std::string err;
@@ -49,9 +60,11 @@ SolverConfig ParseSolverConfig(YamlMap& s, bool frequencies_required) {
   SolverConfig c;
   c.method = s.Choice("method", {"time_domain_strip", "strip_theory_stf"}, c.method);
   c.sections = s.Integer("sections", c.sections);
-  if (c.sections < 2) s.Fail("sections", "must be >= 2 (the paper uses 40)");
+  if (c.sections < 2 || c.sections > kMaxSections)
+    s.Fail("sections", "must lie in [2, " + std::to_string(kMaxSections) + "] (the paper uses 40)");
   c.panels = s.Integer("panels", c.panels);
-  if (c.panels < 4 || c.panels % 2 != 0) s.Fail("panels", "must be even and >= 4 (the paper uses 14)");
+  if (c.panels < 4 || c.panels % 2 != 0 || c.panels > kMaxPanels)
+    s.Fail("panels", "must be even and in [4, " + std::to_string(kMaxPanels) + "] (the paper uses 14)");
   c.cs = s.Number("Cs", c.cs);
   if (c.cs < 0.0) s.Fail("Cs", "must be >= 0 (the paper's values are 0 to 0.15)");
   c.hydrodynamic_fraction = s.Number("hydrodynamic_fraction", c.hydrodynamic_fraction);
@@ -89,7 +102,8 @@ sk::RaoSolverOptions RaoOptions(const SolverConfig& c, const std::string& hull_n
   return o;
 }
 
-hull::MassProperties ParseMassConfig(YamlMap& m, const hull::Hydrostatics& hs) {
+hull::MassProperties ParseMassConfig(YamlMap& m, const hull::Hydrostatics& hs,
+                                     std::vector<std::string>* warnings) {
   hull::MassProperties p;
   p.mass_kg = m.Number("mass_kg", hs.displacement_kg);
   if (!(p.mass_kg > 0.0)) m.Fail("mass_kg", "must be > 0");
@@ -103,7 +117,12 @@ hull::MassProperties ParseMassConfig(YamlMap& m, const hull::Hydrostatics& hs) {
   p.kyy_m = m.Number("kyy_m", 0.25 * hs.L_m);
   if (!(p.kyy_m > 0.0)) m.Fail("kyy_m", "must be > 0 (typically 0.25 L)");
   p.kg_m = m.Number("kg_m", hs.T_m);
+  const bool accept = m.Boolean("accept_mass_mismatch", false);
   m.Finish();
+  for (const auto& f : hull::CheckMassPlausibility(p, hs, accept)) {
+    if (f.refuse) m.Fail(f.quantity, f.message);
+    if (warnings) warnings->push_back(f.message);
+  }
   return p;
 }
 

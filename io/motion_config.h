@@ -4,8 +4,8 @@
 //
 // solver:
 //   method: time_domain_strip        # | strip_theory_stf
-//   sections: 40                     # strip steps along the hull (>= 2)
-//   panels: 14                       # panels per wetted section of one body (even, >= 4)
+//   sections: 40                     # strip steps along the hull (2 to 400)
+//   panels: 14                       # panels per wetted section of one body (even, 4 to 100)
 //   Cs: 0.024                        # sectional damping coefficient (>= 0)
 //   hydrodynamic_fraction: 0.2       # time marching: weight of the hydrodynamic acceleration (0 < w <= 1)
 //   path: periodic                   # | time_marching
@@ -19,6 +19,8 @@
 //   lcg_m_from_ap: 1.41              # default: LCB
 //   kyy_m: 0.782                     # default: 0.25 L
 //   kg_m: 0.34                       # default: the draught (not used by heave/pitch)
+//   accept_mass_mismatch: false      # true: a mass more than 2 % from the displacement is a warning, not an
+//                                    # error (docs/bad-inputs.md)
 #include <string>
 
 #include "io/yaml_map.h"
@@ -63,7 +65,11 @@ SolverConfig ParseSolverConfig(YamlMap& solver, bool frequencies_required = true
 sk::RaoSolverOptions RaoOptions(const SolverConfig& config, const std::string& hull_name, double cs);
 
 /// Reads `mass` with defaults from the hydrostatics (recorded in the resolved config). Throws InputError for
-/// non-positive mass or radius of gyration, or an LCG outside the hull's length.
-hull::MassProperties ParseMassConfig(YamlMap& mass, const hull::Hydrostatics& hs);
+/// non-positive mass or radius of gyration, an LCG outside the hull's length, and the refusals of the mass
+/// plausibility rules (parametric_hull/plausibility.h): a mass more than 2 % from the displaced mass (unless
+/// `accept_mass_mismatch: true`), k_yy outside [0.1, 0.5] L, KG outside (0, 0.5 L]. Their warnings are
+/// appended to *warnings.
+hull::MassProperties ParseMassConfig(YamlMap& mass, const hull::Hydrostatics& hs,
+                                     std::vector<std::string>* warnings = nullptr);
 
 }  // namespace hullopt::io

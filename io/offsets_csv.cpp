@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "io/input_error.h"
+#include "io/input_limits.h"
 
 namespace hullopt::io {
 namespace {
@@ -38,6 +39,9 @@ double ParseNumber(const std::string& field, const std::string& where, const cha
     throw InputError(where + ": " + column + " = '" + t + "' is not a number");
   if (!std::isfinite(v) || errno == ERANGE)
     throw InputError(where + ": " + column + " = '" + t + "' must be a finite number");
+  if (std::fabs(v) > kMaxCoordinate_m)
+    throw InputError(where + ": " + column + " = '" + t + "' is not a hull coordinate (|value| <= " +
+                     std::to_string(int(kMaxCoordinate_m)) + " m)");
   return v;
 }
 

@@ -1,5 +1,6 @@
 #include "io/rao_table_csv.h"
 
+#include <algorithm>
 #include <cmath>
 #include <complex>
 #include <fstream>
@@ -11,6 +12,9 @@
 #include "seakeeping/motions/rao_interpolation.h"
 
 namespace hullopt::io {
+
+// An RAO above this is a unit or column error, not a motion: squared in the spectral moments it would overflow.
+constexpr double kMaxRaoAmplitude = 1000.0;
 namespace {
 
 std::vector<std::string> SplitCsv(const std::string& line) {
@@ -73,6 +77,11 @@ sk::RaoTable ReadRaoTableCsv(const std::string& path, double g) {
       throw InputError(where + ": omega_rad_s must increase from row to row");
     if (v["heave_amp"] < 0.0 || v["pitch_amp"] < 0.0)
       throw InputError(where + ": RAO amplitudes must be >= 0 (the sign is in the phase)");
+    for (const char* amp : {"heave_amp", "pitch_amp"})
+      if (v[amp] > kMaxRaoAmplitude)
+        throw InputError(where + ": column '" + amp + "' = " + cells[col[amp]] + " is not a response amplitude " +
+                         "(at most " + std::to_string(int(kMaxRaoAmplitude)) + " per unit wave; resonance peaks of " +
+                         "real hulls are below 10)");
     t.omega_rad_s.push_back(w);
     t.omega_e_rad_s.push_back(we);
     t.heave.push_back(std::polar(v["heave_amp"], v["heave_phase_deg"] * kDegToRad));
@@ -83,17 +92,21 @@ sk::RaoTable ReadRaoTableCsv(const std::string& path, double g) {
   if (!header_line) throw InputError(path + ": empty RAO file (no header)");
   if (t.omega_rad_s.size() < 2)
     throw InputError(path + ": needs at least 2 frequency rows, has " + std::to_string(t.omega_rad_s.size()));
-  // One speed for the whole table: the mean, every row within 1e-3 relative (CSV round-off) or 1 mm/s.
-  double u = 0.0;
-  for (double s : speeds) u += s / speeds.size();
+  // One speed for the whole table, every row within 1e-3 relative (CSV round-off) or 1 mm/s of the median
+  // (so the error names the odd row out, not the first row), then the mean of the rows.
+  std::vector<double> sorted = speeds;
+  std::sort(sorted.begin(), sorted.end());
+  const double median = sorted[(sorted.size() - 1) / 2];
   for (size_t i = 0; i < speeds.size(); ++i) {
-    if (std::abs(speeds[i] - u) > std::max(1e-3 * std::abs(u), 1e-3)) {
+    if (std::abs(speeds[i] - median) > std::max(1e-3 * std::abs(median), 1e-3)) {
       std::ostringstream o;
       o << path << ":" << row_lines[i] << ": omega_e_rad_s implies speed " << speeds[i]
-        << " m/s (omega_e = omega + omega^2 U/g), other rows " << u << " m/s: one speed per file";
+        << " m/s (omega_e = omega + omega^2 U/g), most rows " << median << " m/s: one speed per file";
       throw InputError(o.str());
     }
   }
+  double u = 0.0;
+  for (double s : speeds) u += s / speeds.size();
   if (std::abs(u) < 1e-3) u = 0.0;
   if (u < 0.0) throw InputError(path + ": omega_e < omega implies a negative speed; head seas need U >= 0");
   t.speed_m_s = u;

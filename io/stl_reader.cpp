@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "io/input_error.h"
+#include "io/input_limits.h"
 
 namespace hullopt::io {
 namespace {
@@ -25,9 +26,10 @@ StlMesh ReadBinary(const std::string& path, const std::string& bytes) {
       for (int c = 0; c < 3; ++c) {
         float f;
         std::memcpy(&f, p + 4 * (3 * v + c), 4);
-        if (!std::isfinite(f))
+        if (!std::isfinite(f) || std::fabs(f) > kMaxCoordinate_m)
           throw InputError(path + ": binary STL triangle " + std::to_string(t + 1) +
-                           " has a non-finite coordinate");
+                           " has a non-finite or absurd coordinate (|value| <= " +
+                           std::to_string(int(kMaxCoordinate_m)) + " m)");
         mesh.triangles[t][v][c] = f;
       }
   }
@@ -59,6 +61,9 @@ StlMesh ReadAscii(const std::string& path, const std::string& text) {
         const double v = std::strtod(xs[c].c_str(), &end);
         if (xs[c].empty() || *end != '\0' || !std::isfinite(v))
           throw InputError(where + ": vertex coordinate '" + xs[c] + "' is not a finite number");
+        if (std::fabs(v) > kMaxCoordinate_m)
+          throw InputError(where + ": vertex coordinate '" + xs[c] + "' is not a hull coordinate (|value| <= " +
+                           std::to_string(int(kMaxCoordinate_m)) + " m)");
         tri[in_facet - 1][c] = v;
       }
       ++in_facet;

@@ -1,7 +1,9 @@
 #include "io/yaml_map.h"
 
 #include <cmath>
+#include <filesystem>
 #include <fstream>
+#include <sstream>
 
 namespace hullopt::io {
 namespace {
@@ -29,16 +31,71 @@ YamlMap::YamlMap(const YAML::Node& node, std::string path, std::string file, YAM
   }
 }
 
+// Config files are a few kB; a larger one is not a config (and would only cost memory).
+constexpr std::uintmax_t kMaxConfigBytes = 16u << 20;
+
+namespace {
+// Configs nest a few levels; deeper is not a config (and an alias could otherwise make the walk endless).
+constexpr int kMaxDepth = 64;
+
+void CheckKeysAt(const YAML::Node& node, const std::string& file, int depth);
+}  // namespace
+
+void YamlMap::CheckKeys(const YAML::Node& node, const std::string& file) { CheckKeysAt(node, file, 0); }
+
+namespace {
+void CheckKeysAt(const YAML::Node& node, const std::string& file, int depth) {
+  if (depth > kMaxDepth)
+    throw InputError(file + ":" + Line(node) + ": nested deeper than " + std::to_string(kMaxDepth) + " levels");
+  if (node.IsSequence()) {
+    for (const auto& e : node) CheckKeysAt(e, file, depth + 1);
+    return;
+  }
+  if (!node.IsMap()) return;
+  std::set<std::string> seen;
+  for (const auto& kv : node) {
+    const YAML::Node& k = kv.first;
+    // Plain ("?") and quoted ("!") scalars only: a tagged, empty or collection key is not a key name.
+    const bool text = k.IsScalar() && (k.Tag() == "?" || k.Tag() == "!") && !k.Scalar().empty();
+    if (!text) {
+      const std::string what = k.IsSequence() ? "a sequence" : k.IsMap() ? "a mapping"
+                               : k.IsScalar() && !k.Scalar().empty() ? "tagged '" + k.Tag() + "'"
+                                                                     : "empty";
+      throw InputError(file + ":" + Line(k) + ": a key must be plain text (this one is " + what + ")");
+    }
+    if (!seen.insert(k.Scalar()).second)
+      throw InputError(file + ":" + Line(k) + ": duplicate key '" + k.Scalar() +
+                       "' (each key may appear once in a mapping)");
+    CheckKeysAt(kv.second, file, depth + 1);
+  }
+}
+}  // namespace
+
 YamlMap YamlMap::LoadFile(const std::string& file) {
-  std::ifstream in(file);
+  std::error_code ec;
+  if (std::filesystem::is_directory(file, ec))
+    throw InputError(file + ": is a folder, not a config file (give the YAML file)");
+  std::ifstream in(file, std::ios::binary);
   if (!in) throw InputError(file + ": cannot open config file (does it exist and is it readable?)");
-  YAML::Node root;
+  const auto bytes = std::filesystem::file_size(file, ec);
+  if (!ec && bytes > kMaxConfigBytes)
+    throw InputError(file + ": " + std::to_string(bytes) + " bytes is not a config file (at most " +
+                     std::to_string(kMaxConfigBytes) + " bytes)");
+  std::ostringstream text;
+  text << in.rdbuf();
+  std::vector<YAML::Node> docs;
   try {
-    root = YAML::Load(in);
+    docs = YAML::LoadAll(text.str());
   } catch (const YAML::Exception& e) {
     throw InputError(file + ":" + std::to_string(e.mark.line + 1) + ": YAML syntax error: " + e.msg);
   }
-  if (!root || root.IsNull()) throw InputError(file + ": config file is empty");
+  if (docs.size() > 1)
+    throw InputError(file + ":" + Line(docs[1]) +
+                     ": a second YAML document ('---' separator); a config file holds one document");
+  if (docs.empty() || !docs[0] || docs[0].IsNull()) throw InputError(file + ": config file is empty");
+  const YAML::Node root = docs[0];
+  if (!root.IsMap()) throw InputError(file + ":" + Line(root) + ": the config must be a mapping of key: value pairs");
+  CheckKeys(root, file);
   return YamlMap(root, "", file, YAML::Node(YAML::NodeType::Map));
 }
 
@@ -96,7 +153,8 @@ double YamlMap::Number(const std::string& key, double default_value) {
 
 int YamlMap::Integer(const std::string& key) {
   const double v = ToNumber(Get(key), key);
-  if (v != std::floor(v) || std::fabs(v) > 2e9) Fail(key, "must be a whole number");
+  if (v != std::floor(v)) Fail(key, "must be a whole number");
+  if (std::fabs(v) > 2e9) Fail(key, "is out of range: a whole number of magnitude at most 2e9");
   resolved_[key] = static_cast<int>(v);
   return static_cast<int>(v);
 }
@@ -108,6 +166,17 @@ int YamlMap::Integer(const std::string& key, int default_value) {
     return default_value;
   }
   return Integer(key);
+}
+
+int YamlMap::Integer(const std::string& key, int default_value, int lo, int hi, const std::string& why) {
+  used_->insert(key);
+  const double v = Has(key) ? ToNumber(node_[key], key) : default_value;
+  if (v != std::floor(v)) Fail(key, "must be a whole number");
+  if (v < lo || v > hi)
+    Fail(key, "must lie in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]" +
+                  (why.empty() ? "" : " (" + why + ")"));
+  resolved_[key] = static_cast<int>(v);
+  return static_cast<int>(v);
 }
 
 bool YamlMap::Boolean(const std::string& key, bool default_value) {
@@ -223,14 +292,14 @@ std::vector<YamlMap> YamlMap::ListOfMaps(const std::string& key) {
 std::vector<std::string> YamlMap::Keys() const {
   std::vector<std::string> keys;
   if (node_ && node_.IsMap())
-    for (const auto& kv : node_) keys.push_back(kv.first.as<std::string>());
+    for (const auto& kv : node_) keys.push_back(kv.first.Scalar());
   return keys;
 }
 
 void YamlMap::Finish() const {
   if (!node_ || !node_.IsMap()) return;
   for (const auto& kv : node_) {
-    const std::string k = kv.first.as<std::string>();
+    const std::string k = kv.first.Scalar();
     if (!used_->count(k)) {
       throw InputError(file_ + ":" + Line(kv.first) + ": unknown key '" + Full(k) +
                        "' (misspelt, or not used by this command; see docs/config-reference.md)");

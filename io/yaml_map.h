@@ -17,9 +17,12 @@ class YamlMap {
  public:
   /// node must be a mapping (or null = empty). path is the dotted key path ("" at the root), file the source.
   YamlMap(const YAML::Node& node, std::string path, std::string file, YAML::Node resolved);
-  /// Loads a YAML file as the root mapping. Throws InputError for a missing file or a syntax error (with
-  /// line).
+  /// Loads a YAML file as the root mapping. Throws InputError (with the line) for a missing file, a folder, a
+  /// syntax error, a second document, a duplicate key, or a key that is not plain text (a sequence, a mapping,
+  /// a tag, an empty key): anywhere in the file.
   static YamlMap LoadFile(const std::string& file);
+  /// Checks a parsed tree as LoadFile does (duplicate and non-text keys), naming file and line.
+  static void CheckKeys(const YAML::Node& node, const std::string& file);
 
   bool Has(const std::string& key) const;
 
@@ -27,6 +30,8 @@ class YamlMap {
   double Number(const std::string& key, double default_value);  ///< optional finite number
   int Integer(const std::string& key);
   int Integer(const std::string& key, int default_value);
+  /// Optional whole number in [lo, hi]; the error states the range (and `why`, e.g. the cost, if given).
+  int Integer(const std::string& key, int default_value, int lo, int hi, const std::string& why = "");
   bool Boolean(const std::string& key, bool default_value);
   std::string String(const std::string& key);
   std::string String(const std::string& key, const std::string& default_value);
@@ -56,6 +61,8 @@ class YamlMap {
   const std::string& file() const { return file_; }
   /// The resolved tree (values as read, defaults filled in) of this mapping.
   YAML::Node resolved() const { return resolved_; }
+  /// The mapping as read (for lookups that must not mark keys consumed).
+  const YAML::Node& raw() const { return node_; }
 
  private:
   YAML::Node Get(const std::string& key) const;  // throws if missing

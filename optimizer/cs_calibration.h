@@ -99,6 +99,10 @@ struct CsPeakChange {
   double RelativeErrorAfter() const { return (after.value - measured.value) / measured.value; }
 };
 
+/// Fewer residuals than this per fitted parameter gives a warning: with n close to p the residual variance,
+/// hence every standard error, rests on a handful of points.
+constexpr int kMinPointsPerParameter = 3;
+
 struct CsCalibrationResult {
   CsFitMode mode = CsFitMode::kSingle;
   std::vector<std::string> parameter_names;     ///< "Cs"; "Cs[<case label>]" per case; or "a", "b"

@@ -86,8 +86,8 @@ bool DesignVariables::IsValid(std::string* error) const {
       Check(fin(outrigger_B_over_T) && outrigger_B_over_T > 0, "outrigger_B_over_T", outrigger_B_over_T, "must be > 0", error) &&
       Check(fin(outrigger_offset_over_L) && outrigger_offset_over_L > 0, "outrigger_offset_over_L", outrigger_offset_over_L, "must be > 0", error) &&
       Check(fin(freeboard_over_T) && freeboard_over_T > 0, "freeboard_over_T", freeboard_over_T, "must be > 0", error) &&
-      Check(stations >= 11 && stations % 2 == 1, "stations", stations, "must be odd and >= 11 (midships must be a station)", error) &&
-      Check(section_points >= 8, "section_points", section_points, "must be >= 8", error);
+      Check(stations >= 11 && stations <= 1001 && stations % 2 == 1, "stations", stations, "must be odd and in [11, 1001] (midships must be a station)", error) &&
+      Check(section_points >= 8 && section_points <= 400, "section_points", section_points, "must lie in [8, 400]", error);
 
   // clang-format on
   if (ok && (type == HullType::kSwath) != (section_style == SectionStyle::kSwathBulb)) {

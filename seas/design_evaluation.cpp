@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <limits>
+#include <sstream>
 #include <stdexcept>
 
 #include "seakeeping/motions/rao_interpolation.h"
@@ -79,6 +80,17 @@ DesignEvaluation EvaluateDesign(const RaoTable& rao, const HullExtent& hull,
       r.rms_displacement_m = m.rms_displacement_m();
       r.omega_char_rad_s = MsiCharacteristicFrequency(m, options.msi.frequency);
       r.msi_pct = MotionSicknessIncidence(m, options.msi, g);
+      // Checked here, where they are computed: an overflow (RAOs far too large) must not become "MSI 0 %".
+      for (const auto& [q, v] : {std::pair<const char*, double>{"rms acceleration", r.rms_accel_m_s2},
+                                 {"rms displacement", r.rms_displacement_m},
+                                 {"MSI characteristic frequency", r.omega_char_rad_s},
+                                 {"MSI", r.msi_pct}}) {
+        if (std::isfinite(v)) continue;
+        std::ostringstream msg;
+        msg << q << " at position '" << r.position << "' in the sea Hs " << se.sea.Hs_m << " m, Tz " << se.Tz_s
+            << " s is not finite (the RAOs or the spectrum overflow)";
+        throw std::domain_error(msg.str());
+      }
       if (i < 3) {
         se.mean.rms_accel_m_s2 += r.rms_accel_m_s2 / 3.0;
         se.mean.rms_accel_g += r.rms_accel_g / 3.0;

@@ -1,5 +1,7 @@
 #include "seakeeping/motions/rao_solver.h"
 
+#include "seakeeping/motions/rao_checks.h"
+
 #include <stdexcept>
 
 #include "seakeeping/motions/periodic_motion_solver.h"
@@ -69,8 +71,11 @@ RaoTable ComputeRaos(const hull::HullForm& hull, const hull::MassProperties& mas
     g.layout = options.layout;  // the same strip stations as the time-domain method
     const StripKernel geometry = StripKernelGeometry(hull, g, speed_m_s, rho_kg_m3, g_m_s2);
     const HeadSeaShipModel model(geometry, mass, options.motion);
-    return SolveStripTheoryRaos(model, omega_rad_s,
-                                FrequencyDomainSectionRows(geometry, options.panels, options.interaction));
+    RaoTable t = SolveStripTheoryRaos(model, omega_rad_s,
+                                      FrequencyDomainSectionRows(geometry, options.panels, options.interaction));
+    RequireFiniteRaos(t);
+    t.warnings = RaoResonanceWarnings(t);
+    return t;
   }
   const StripKernel kernel = BuildHullStripKernel(hull, options, speed_m_s, rho_kg_m3, g_m_s2, builder);
   const HeadSeaShipModel model(kernel, mass, options.motion);
@@ -81,7 +86,9 @@ RaoTable ComputeRaos(const hull::HullForm& hull, const hull::MassProperties& mas
     KernelStripForceModel forces(kernel);
     t = SolveMarchingRaos(model, forces, omega_rad_s, options.marching);
   }
+  RequireFiniteRaos(t);
   t.warnings = StripKernelWarnings(kernel);
+  for (const auto& w : RaoResonanceWarnings(t)) t.warnings.push_back(w);
   return t;
 }
 

@@ -2,6 +2,9 @@
 // file, line, key and rule in the message.
 #include <catch2/catch.hpp>
 
+#include <cstdio>
+#include <fstream>
+
 #include "io/yaml_map.h"
 
 using hullopt::io::InputError;
@@ -44,4 +47,27 @@ TEST_CASE("wrong type, NaN, missing key and empty list are refused", "[yaml][bad
 
 TEST_CASE("missing file and syntax errors name the file", "[yaml][bad-input]") {
   CHECK_THROWS_AS(YamlMap::LoadFile("/nonexistent/x.yaml"), InputError);
+}
+
+TEST_CASE("duplicate keys, second documents and non-text keys are refused with their line", "[yaml][bad-input]") {
+  const std::string file = "test_strict.yaml";
+  auto load = [&](const std::string& text) {
+    std::ofstream(file) << text;
+    return YamlMap::LoadFile(file);
+  };
+  CHECK_THROWS_WITH(load("a: 1\nb: {c: 1, c: 2}\n"), Catch::Contains(":2: duplicate key 'c'"));
+  CHECK_THROWS_WITH(load("a: 1\n---\nb: 2\n"), Catch::Contains(":3: a second YAML document"));
+  CHECK_THROWS_WITH(load("a: 1\n? [x]\n: 2\n"), Catch::Contains(":2: a key must be plain text"));
+  CHECK_THROWS_WITH(load("v: {!L: [8, 16]}\n"), Catch::Contains(":1: a key must be plain text"));
+  CHECK_THROWS_WITH(load("- 1\n- 2\n"), Catch::Contains("must be a mapping"));
+  CHECK_NOTHROW(load("---\na: 1\nb: {c: 1, d: 2}\n"));  // a leading document marker is one document
+  std::remove(file.c_str());
+}
+
+TEST_CASE("ranged whole numbers state their range", "[yaml][bad-input]") {
+  auto m = FromText("n: 1e12\nf: 2.5\nok: 7\n");
+  CHECK_THROWS_WITH(m.Integer("n", 1, 1, 1000000), Catch::Contains("n' = 1e12: must lie in [1, 1000000]"));
+  CHECK_THROWS_WITH(m.Integer("f", 1, 1, 10), Catch::Contains("must be a whole number"));
+  CHECK(m.Integer("ok", 1, 1, 10) == 7);
+  CHECK(m.Integer("absent", 3, 1, 10) == 3);
 }

@@ -1,0 +1,29 @@
+#include "io/hull_plausibility.h"
+
+#include <stdexcept>
+
+#include "io/input_error.h"
+#include "parametric_hull/hydrostatics.h"
+
+namespace hullopt::io {
+
+std::vector<std::string> ApplyFindings(const std::vector<hull::PlausibilityFinding>& findings,
+                                       const std::string& where) {
+  std::vector<std::string> warnings;
+  for (const auto& f : findings)
+    if (f.refuse) throw InputError(where + ": " + f.message);
+  for (const auto& f : findings) warnings.push_back(f.message);
+  return warnings;
+}
+
+std::vector<std::string> CheckHull(const hull::HullForm& hull, const std::string& where) {
+  hull::Hydrostatics hs;
+  try {
+    hs = hull::ComputeHydrostatics(hull);
+  } catch (const std::logic_error& e) {
+    throw InputError(where + ": " + e.what());
+  }
+  return ApplyFindings(hull::CheckHullPlausibility(hull, hs), where);
+}
+
+}  // namespace hullopt::io

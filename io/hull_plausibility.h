@@ -1,0 +1,21 @@
+#pragma once
+// Applying the plausibility rules (parametric_hull/plausibility.h) to a hull or mass as it is loaded: a
+// refusal becomes an InputError naming the source and the rule, a warning is returned for the outputs.
+#include <string>
+#include <vector>
+
+#include "parametric_hull/hull_form.h"
+#include "parametric_hull/plausibility.h"
+
+namespace hullopt::io {
+
+/// Hydrostatics of the hull, then the hull rules. `where` names the source ("file.csv", "config: key
+/// 'hull.parametric'"). Throws InputError "where: rule" for the first refusal (also when the hull displaces
+/// no water); returns the warnings.
+std::vector<std::string> CheckHull(const hull::HullForm& hull, const std::string& where);
+
+/// Throws InputError "where: rule" for the first refusal among findings; returns the warnings' messages.
+std::vector<std::string> ApplyFindings(const std::vector<hull::PlausibilityFinding>& findings,
+                                       const std::string& where);
+
+}  // namespace hullopt::io

@@ -1,0 +1,267 @@
+#!/usr/bin/env bash
+# Every row of docs/bad-inputs.md, end to end: a bad or implausible input to each command exits with the stated
+# code and a one-line message naming the key/line and the rule; a documented warning case exits 0 with the
+# warning on stderr and in the output file named. `--table` prints the markdown rows of docs/bad-inputs.md
+# instead of checking quietly. Usage: bad_inputs_table.sh HULLOPT [--table]
+set -u
+BIN="$1"
+TABLE="${2:-}"
+T=$(mktemp -d)
+trap 'rm -rf "$T"' EXIT
+fail=0
+n=0
+
+# run NAME EXPECT_RC EXPECT_SUBSTRING WARN_FILE -- COMMAND ARGS... (WARN_FILE: "-" or an output file that must
+# also hold EXPECT_SUBSTRING; {T} in args is the scratch folder)
+run() {
+  local name="$1" rc_want="$2" expect="$3" warn_file="$4"
+  shift 5
+  local args=()
+  for a in "$@"; do args+=("${a//\{T\}/$T}"); done
+  "$BIN" "${args[@]}" > "$T/$name.out" 2> "$T/$name.err"
+  local rc=$?
+  n=$((n + 1))
+  local msg
+  msg=$(grep -m1 -E "^hullopt: (error|warning)" "$T/$name.err" || head -1 "$T/$name.err")
+  local ok=1
+  if [ "$rc" -ne "$rc_want" ]; then echo "FAIL $name: exit $rc (want $rc_want): $(cat "$T/$name.err")"; ok=0; fi
+  if ! grep -qF -- "$expect" "$T/$name.err"; then echo "FAIL $name: stderr lacks '$expect': $(head -3 "$T/$name.err")"; ok=0; fi
+  if [ "$rc_want" -ne 0 ]; then
+    local lines; lines=$(wc -l < "$T/$name.err")
+    [ "$lines" -eq 1 ] || { echo "FAIL $name: $lines lines on stderr (want 1)"; ok=0; }
+    grep -q "^hullopt: error: " "$T/$name.err" || { echo "FAIL $name: no 'hullopt: error:' prefix"; ok=0; }
+  fi
+  if [ "$warn_file" != "-" ]; then
+    local wf="${warn_file//\{T\}/$T}"
+    grep -qF -- "$expect" "$wf" 2>/dev/null || { echo "FAIL $name: warning '$expect' not in $warn_file"; ok=0; }
+  fi
+  [ $ok -eq 1 ] || fail=1
+  if [ "$TABLE" = "--table" ]; then
+    local shown="${msg//$T\//}"
+    shown="${shown//|/\\|}"
+    printf '| %d | `%s` | %s | %d | %s |\n' "$n" "$1" "$DESC" "$rc" "$shown"
+  fi
+}
+
+# ---- inputs -----------------------------------------------------------------------------------------------
+P='type: catamaran, displacement_t: 1000, L_over_B: 11, B_over_T: 2, Cb: 0.4, Cp: 0.69, Cwp: 0.76, LCB_pct_L: -6.4, LCF_pct_L: -8.3'
+Q="$P, stations: 21, section_points: 10"
+SOLVER='solver: { sections: 10, panels: 6, frequencies: { lambda_over_L: [1.0, 1.5, 2.0] } }'
+D372='offsets_csv: data/delft372/delft372_offsets.csv, draught_m: 0.15, hulls: 2, spacing_m: 0.70'
+w() { printf '%s\n' "$2" > "$T/$1.yaml"; }
+awk -F, 'NR == 1 { print; next } { printf "%g,%g,%g\n", $1 * 1000, $2 * 1000, $3 * 1000 }' \
+  data/delft372/delft372_offsets.csv > "$T/offsets_mm.csv"
+awk -F, 'NR == 2 { print $1 "," $2 ",-1e300"; next } { print }' data/delft372/delft372_offsets.csv > "$T/keel_huge.csv"
+printf 'solid s\n facet normal 0 0 1\n  outer loop\n   vertex 0 0 -1e308\n   vertex 1 0 0\n   vertex 0 1 0\n  endloop\n endfacet\nendsolid s\n' > "$T/huge.stl"
+R=examples/data/synthetic_catamaran_rao.csv
+awk -F, 'NR == 5 { $4 = "1e300" } { print }' OFS=, "$R" > "$T/rao_huge.csv"
+awk -F, 'NR == 9 { $1 = $1 * 1.2 } { print }' OFS=, "$R" > "$T/rao_mixed.csv"
+head -3 "$R" > "$T/rao_one_row.csv"
+grep -v '^#' "$R" | cut -d, -f1-4 > "$T/rao_no_pitch.csv"
+EV="name: x
+hull_extent: { cg_to_transom_m: 18.0, cg_to_bow_m: 24.0 }
+speed: { kn: 40 }
+seas: [ { Hs_m: 1.0, Tz_s: 5.0 } ]"
+head -2 data/delft372/delft372_tank_rao_fn075.csv > "$T/tank_one_row.csv"
+CAL_MODEL='model: { synthetic_oscillator: { heave_natural_rad_s: 8.1, pitch_natural_rad_s: 8.4, heave_zeta0: 0.1, pitch_zeta0: 0.2, heave_zeta_per_Cs: 2.0, pitch_zeta_per_Cs: 2.0, length_m: 3.0 } }'
+OPT="hull: { parametric: { $Q } }
+water: { rho_kg_m3: 1025, g_m_s2: 9.81 }
+speed: { kn: 40 }
+seas: [ { Hs_m: 1.0, Tz_s: 5.0 } ]"
+
+# ---- cases: DESC is the table's description ----------------------------------------------------------------
+DESC='offsets in millimetres (draught in metres)'
+w mm "hull: { offsets_csv: $T/offsets_mm.csv, draught_m: 0.15, hulls: 2, spacing_m: 700 }"
+run offsets_mm 1 "probably in millimetres" - -- hull "$T/mm.yaml" --out "$T/o1"
+DESC='`length_m: 0.5` on a 3 m model (Cb would be 2.4)'
+w short "hull: { $D372, length_m: 0.5 }"
+run length_short 1 "length_m = 0.5 m is not within a factor" - -- hull "$T/short.yaml" --out "$T/o2"
+DESC='`length_m: 300` on a 3 m model (Cp would be 0)'
+w long "hull: { $D372, length_m: 300 }"
+run length_long 1 "length_m = 300 m is not within a factor" - -- hull "$T/long.yaml" --out "$T/o3"
+DESC='offsets with a keel at z = -1e300'
+w keel "hull: { offsets_csv: $T/keel_huge.csv, draught_m: 0.15, hulls: 2, spacing_m: 0.7 }"
+run keel_huge 1 "is not a hull coordinate" - -- hull "$T/keel.yaml" --out "$T/o4"
+DESC='ASCII STL vertex at z = -1e308'
+w stl "hull: { stl: $T/huge.stl, draught_m: 0.15 }"
+run stl_huge 1 "is not a hull coordinate" - -- hull "$T/stl.yaml" --out "$T/o5"
+DESC='`spacing_over_L: 0.01`: demihulls overlap (hull)'
+w overlap "hull: { parametric: { $P, spacing_over_L: 0.01 } }"
+run overlap_hull 1 "the hulls overlap" - -- hull "$T/overlap.yaml" --out "$T/o6"
+DESC='`spacing_over_L: 0.01`: demihulls overlap (rao)'
+w overlap_rao "hull: { parametric: { $Q, spacing_over_L: 0.01 } }
+speed: { Fn: 0.8 }
+$SOLVER"
+run overlap_rao 1 "the hulls overlap" - -- rao "$T/overlap_rao.yaml" --out "$T/o7"
+DESC='`spacing_m` smaller than the demihull beam (offsets)'
+w overlap_file "hull: { offsets_csv: data/delft372/delft372_offsets.csv, draught_m: 0.15, hulls: 2, spacing_m: 0.1, length_m: 3.0 }"
+run overlap_file 1 "the hulls overlap" - -- hull "$T/overlap_file.yaml" --out "$T/o8"
+DESC='`mass_kg` ten times the displacement (rao)'
+w heavy "hull: { $D372, length_m: 3.0 }
+mass: { mass_kg: 870.7 }
+water: { rho_kg_m3: 1000, g_m_s2: 9.81 }
+speed: { Fn: 0.75 }
+$SOLVER"
+run mass_heavy 1 "key 'mass.mass_kg' = 870.7" - -- rao "$T/heavy.yaml" --out "$T/o9"
+DESC='`mass_kg` ten times the displacement (hull)'
+run mass_heavy_hull 1 "the hull would float at another draught" - -- hull "$T/heavy.yaml" --out "$T/o10"
+DESC='`mass_kg` 10 % off with `accept_mass_mismatch: true` (warning case)'
+w heavy_ok "hull: { $D372, length_m: 3.0 }
+mass: { mass_kg: 95, accept_mass_mismatch: true }
+water: { rho_kg_m3: 1000, g_m_s2: 9.81 }
+speed: { Fn: 0.75 }
+$SOLVER"
+run mass_accepted 0 "accepted by mass.accept_mass_mismatch" "{T}/o11/rao.csv" -- rao "$T/heavy_ok.yaml" --out "$T/o11"
+DESC='`kyy_m` of 2 L'
+w kyy "hull: { $D372, length_m: 3.0 }
+mass: { kyy_m: 6.0 }
+water: { rho_kg_m3: 1000, g_m_s2: 9.81 }
+speed: { Fn: 0.75 }
+$SOLVER"
+run kyy_big 1 "key 'mass.kyy_m' = 6.0" - -- rao "$T/kyy.yaml" --out "$T/o12"
+DESC='`kg_m` of 10 m on a 3 m model'
+w kg "hull: { $D372, length_m: 3.0 }
+mass: { kg_m: 10 }"
+run kg_big 1 "key 'mass.kg_m' = 10" - -- hull "$T/kg.yaml" --out "$T/o13"
+DESC='`kg_m: -1` (below the baseline)'
+w kgneg "hull: { $D372, length_m: 3.0 }
+mass: { kg_m: -1 }"
+run kg_negative 1 "key 'mass.kg_m' = -1" - -- hull "$T/kgneg.yaml" --out "$T/o14"
+DESC='`Cb: 1.2`'
+w cb "hull: { parametric: { type: catamaran, displacement_t: 1000, L_over_B: 11, B_over_T: 2, Cb: 1.2, Cp: 0.69, Cwp: 0.76, LCB_pct_L: 0, LCF_pct_L: 0 } }"
+run cb_over_one 1 "Cb' = 1.2: must lie in (0, 1)" - -- hull "$T/cb.yaml" --out "$T/o15"
+DESC='`Cb > Cp` (Cm > 1)'
+w cm "hull: { parametric: { type: catamaran, displacement_t: 1000, L_over_B: 11, B_over_T: 2, Cb: 0.7, Cp: 0.6, Cwp: 0.76, LCB_pct_L: 0, LCF_pct_L: 0 } }"
+run cm_over_one 1 "Cm = Cb/Cp" - -- hull "$T/cm.yaml" --out "$T/o16"
+DESC='`LCB_pct_L: 30` (outside the hull range)'
+w lcb "hull: { parametric: { type: catamaran, displacement_t: 1000, L_over_B: 11, B_over_T: 2, Cb: 0.4, Cp: 0.69, Cwp: 0.76, LCB_pct_L: 30, LCF_pct_L: 0 } }"
+run lcb_out 1 "LCB_pct_L' = 30: must lie in (-25, 25)" - -- hull "$T/lcb.yaml" --out "$T/o17"
+DESC='duplicate key (first value used to win)'
+w dup "hull:
+  parametric: { $P }
+water: { rho_kg_m3: 1025 }
+water: { rho_kg_m3: 1000 }"
+run duplicate_key 1 ":4: duplicate key 'water'" - -- hull "$T/dup.yaml" --out "$T/o18"
+DESC='a second YAML document (used to be ignored)'
+w twodocs "hull:
+  parametric: { $P }
+---
+hull: { parametric: { $P } }"
+run second_document 1 ":4: a second YAML document" - -- hull "$T/twodocs.yaml" --out "$T/o19"
+DESC='non-scalar key `? [x]`'
+w seqkey "hull:
+  parametric: { $P }
+? [x]
+: 1"
+run sequence_key 1 ":3: a key must be plain text (this one is a sequence)" - -- hull "$T/seqkey.yaml" --out "$T/o20"
+DESC='fuzz-found `variables: {!L_over_B: [8, 16], B_over_T: [1A.4, 2.6]}`'
+w fuzz_tag "$OPT
+optimize:
+  variables: {!L_over_B: [8, 16], B_over_T: [1A.4, 2.6]}"
+run fuzz_tagged_key 1 ":6: a key must be plain text" - -- optimize "$T/fuzz_tag.yaml" --out "$T/o21"
+DESC='`variables: { [a]: [0, 1] }`'
+w seqvar "$OPT
+optimize:
+  variables: { [a]: [0, 1] }"
+run sequence_variable 1 ":6: a key must be plain text (this one is a sequence)" - -- optimize "$T/seqvar.yaml" --out "$T/o22"
+DESC='`B_over_T: [1A.4, 2.6]` bounds'
+w badnum "$OPT
+optimize:
+  variables: { B_over_T: [1A.4, 2.6] }"
+run bad_number 1 "element 1 = 1A.4 is not a number" - -- optimize "$T/badnum.yaml" --out "$T/o23"
+DESC='a folder given as the config file'
+mkdir -p "$T/adir"
+run config_is_folder 1 "is a folder, not a config file" - -- hull "$T/adir" --out "$T/o24"
+DESC='config file that does not exist'
+run config_missing 1 "cannot open config file" - -- rao "$T/nope.yaml" --out "$T/o25"
+DESC='empty config file'
+: > "$T/empty.yaml"
+run config_empty 1 "config file is empty" - -- hull "$T/empty.yaml" --out "$T/o26"
+DESC='YAML syntax error'
+printf 'hull: { parametric: [\n' > "$T/syntax.yaml"
+run yaml_syntax 1 "YAML syntax error" - -- hull "$T/syntax.yaml" --out "$T/o27"
+DESC='`solver.sections: 100000` (used to exhaust memory)'
+w sections "hull: { parametric: { $Q } }
+speed: { Fn: 0.8 }
+solver: { sections: 100000, frequencies: { lambda_over_L: [1.0] } }"
+run sections_huge 1 "key 'solver.sections' = 100000: must lie in [2, 400]" - -- rao "$T/sections.yaml" --out "$T/o28"
+DESC='`solver.panels: 1000`'
+w panels "hull: { parametric: { $Q } }
+speed: { Fn: 0.8 }
+solver: { panels: 1000, frequencies: { lambda_over_L: [1.0] } }"
+run panels_huge 1 "key 'solver.panels' = 1000: must be even and in [4, 100]" - -- rao "$T/panels.yaml" --out "$T/o29"
+DESC='`sections: 40.5`'
+w sections_frac "hull: { parametric: { $Q } }
+speed: { Fn: 0.8 }
+solver: { sections: 40.5, frequencies: { lambda_over_L: [1.0] } }"
+run sections_fraction 1 "must be a whole number" - -- rao "$T/sections_frac.yaml" --out "$T/o30"
+DESC='frequency range `count: 100000`'
+w freqs "hull: { parametric: { $Q } }
+speed: { Fn: 0.8 }
+solver: { frequencies: { range: { quantity: lambda_over_L, from: 0.5, to: 3, count: 100000 } } }"
+run frequencies_huge 1 "key 'solver.frequencies.range.count' = 100000: must lie in [1, 1000]" - -- rao "$T/freqs.yaml" --out "$T/o31"
+DESC='`hull.stations: 99999` (used to write a 138 MB file)'
+w stations "hull: { $D372, length_m: 3.0, stations: 99999 }"
+run stations_huge 1 "key 'hull.stations' = 99999: must be 0 (keep the file's stations) or in [3, 1001]" - -- hull "$T/stations.yaml" --out "$T/o32"
+DESC='`parametric.stations: 99999`'
+w pstations "hull: { parametric: { $P, stations: 99999 } }"
+run parametric_stations_huge 1 "must be odd and in [11, 1001]" - -- hull "$T/pstations.yaml" --out "$T/o33"
+DESC='`max_evaluations: 1e12`'
+w maxev "$OPT
+optimize: { variables: { L_over_B: [8, 16] }, max_evaluations: 1e12 }"
+run max_evaluations_huge 1 "key 'optimize.max_evaluations' = 1e12: must lie in [1, 1000000]" - -- optimize "$T/maxev.yaml" --out "$T/o34"
+DESC='`starts: 0`'
+w starts "$OPT
+optimize: { variables: { L_over_B: [8, 16] }, starts: 0 }"
+run starts_zero 1 "key 'optimize.starts' = 0: must lie in [1, 1000]" - -- optimize "$T/starts.yaml" --out "$T/o35"
+DESC='explore `samples: 1e9`'
+w samples "$OPT
+explore: { variables: { L_over_B: [8, 16] }, samples: 1e9 }"
+run samples_huge 1 "key 'explore.samples' = 1e9: must lie in [1, 1000000]" - -- explore "$T/samples.yaml" --out "$T/o36"
+DESC='`explore --threads 100000` (used to segfault)'
+w explore_ok "$OPT
+explore: { variables: { L_over_B: [8, 16] }, samples: 2 }"
+run threads_huge 1 "--threads 100000: must lie in [0, 256]" - -- explore "$T/explore_ok.yaml" --out "$T/o37" --threads 100000
+DESC='`optimize --threads -3` (used to be accepted)'
+w opt_ok "$OPT
+optimize: { variables: { L_over_B: [8, 16] }, max_evaluations: 2 }"
+run threads_negative 1 "--threads -3: must lie in [0, 256]" - -- optimize "$T/opt_ok.yaml" --out "$T/o38" --threads -3
+DESC='`explore --chunk -1`'
+run chunk_negative 1 "--chunk -1: must be >= 0" - -- explore "$T/explore_ok.yaml" --out "$T/o39" --chunk -1
+DESC='explore into a folder written by `hull`'
+"$BIN" hull examples/hull_catamaran.yaml --out "$T/hull_out" > /dev/null 2>&1
+run explore_into_hull_folder 1 "holds the output of 'hullopt hull'" - -- explore "$T/explore_ok.yaml" --out "$T/hull_out"
+DESC='rao into a folder written by `hull`'
+run rao_into_hull_folder 1 "holds the output of 'hullopt hull'" - -- rao examples/rao_delft372.yaml --out "$T/hull_out"
+DESC='rao.csv with `heave_amp` 1e300 (used to give MSI 0 %)'
+w ev_huge "rao_csv: $T/rao_huge.csv
+$EV"
+run rao_csv_huge 1 "rao_huge.csv:5: column 'heave_amp' = 1e300 is not a response amplitude" - -- evaluate "$T/ev_huge.yaml" --out "$T/o42"
+DESC='rao.csv with one row at another speed (names that row)'
+w ev_mixed "rao_csv: $T/rao_mixed.csv
+$EV"
+run rao_csv_mixed_speed 1 "rao_mixed.csv:9: omega_e_rad_s implies speed" - -- evaluate "$T/ev_mixed.yaml" --out "$T/o43"
+DESC='rao.csv with one frequency row'
+w ev_one "rao_csv: $T/rao_one_row.csv
+$EV"
+run rao_csv_one_row 1 "needs at least 2 frequency rows" - -- evaluate "$T/ev_one.yaml" --out "$T/o44"
+DESC='rao.csv without the pitch columns'
+w ev_nopitch "rao_csv: $T/rao_no_pitch.csv
+$EV"
+run rao_csv_no_pitch 1 "header lacks column 'heave_phase_deg'" - -- evaluate "$T/ev_nopitch.yaml" --out "$T/o45"
+DESC='section spacing smaller than the section beam'
+w sec "section: { shape: semicircle, radius_m: 1.0, count: 2, spacing_m: 1.5, panels: 28, method: [frequency_domain], frequencies: { omega_min_rad_s: 0.5, omega_max_rad_s: 5.5, count: 3 } }
+water: { rho_kg_m3: 1025, g_m_s2: 9.81 }"
+run section_overlap 1 "the sections would overlap" - -- section "$T/sec.yaml" --out "$T/o46"
+DESC='calibrate with a single tank row (warning case)'
+w cal1 "speed: { Fn: 0.75 }
+calibrate: { data: [$T/tank_one_row.csv], mode: single, Cs_initial: 0.024, $CAL_MODEL }"
+run calibrate_one_row 0 "only 2 data point(s) for 1 fitted parameter(s)" "{T}/o47/calibration.json" -- calibrate "$T/cal1.yaml" --out "$T/o47"
+DESC='calibrate data file missing'
+w cal_missing "speed: { Fn: 0.75 }
+calibrate: { data: [$T/none.csv], mode: single, $CAL_MODEL }"
+run calibrate_missing_data 1 "none.csv" - -- calibrate "$T/cal_missing.yaml" --out "$T/o48"
+
+if [ $fail -ne 0 ]; then echo "bad_inputs_table: failures among $n cases"; exit 1; fi
+[ "$TABLE" = "--table" ] || echo "bad_inputs_table: all $n cases behave as docs/bad-inputs.md states"
+exit 0
