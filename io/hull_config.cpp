@@ -1,8 +1,10 @@
 #include "io/hull_config.h"
 
+#include <cmath>
 #include <stdexcept>
 
 #include "io/hull_plausibility.h"
+#include "io/input_limits.h"
 #include "io/offsets_csv.h"
 #include "io/stl_reader.h"
 #include "parametric_hull/hull_generator.h"
@@ -115,6 +117,9 @@ HullOptions ParseHullConfig(YamlMap& root, const WaterOptions& water) {
     h.Fail("stations", "must be 0 (keep the file's stations) or in [3, " + std::to_string(kMaxStations) + "]");
   o.length_m = h.Number("length_m", 0.0);
   if (o.length_m < 0.0) h.Fail("length_m", "must be >= 0 m (0 = span of the wetted stations)");
+  for (const char* k : {"draught_m", "spacing_m", "length_m"})
+    if (h.Has(k) && std::fabs(h.Number(k)) > kMaxCoordinate_m)
+      h.Fail(k, "is not a hull dimension (at most " + std::to_string(int(kMaxCoordinate_m)) + " m)");
   h.Finish();
   return o;
 }

@@ -434,16 +434,6 @@ CsCalibrationResult CalibrateCs(const CsRaoModel& model, const std::vector<Calib
   }
   for (int i = 0; i < p; ++i)
     res.parameter_std_errors.push_back(std::sqrt(std::max(0.0, res.covariance[i][i])));
-  // Honesty of the fit: a "converged" fit says nothing if the data barely determine the parameters.
-  if (n < kMinPointsPerParameter * p)
-    res.warnings.push_back("only " + std::to_string(n) + " data point(s) for " + std::to_string(p) +
-                           " fitted parameter(s) (fewer than " + std::to_string(kMinPointsPerParameter) +
-                           " per parameter): the fit and its standard errors are not meaningful");
-  for (int i = 0; i < p; ++i)
-    if (res.parameter_std_errors[i] > std::fabs(res.parameters[i]))
-      res.warnings.push_back("the standard error of " + res.parameter_names[i] + " (" +
-                             Fmt(res.parameter_std_errors[i]) + ") is larger than its value (" +
-                             Fmt(res.parameters[i]) + "): the data do not determine it");
 
   // Per-case Cs, before/after residuals and peaks.
   double ss_before = 0, ss_after = 0;
@@ -533,6 +523,16 @@ CsCalibrationResult CalibrateCs(const CsRaoModel& model, const std::vector<Calib
   res.reduced_chi_square = ss_after / (n - p);
   res.model_evaluations = evaluations.load();
   res.fit_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  // Honesty of the fit: a "converged" fit says nothing if the data barely determine the parameters.
+  if (n < kMinPointsPerParameter * p)
+    res.warnings.push_back("only " + std::to_string(n) + " data point(s) for " + std::to_string(p) +
+                           " fitted parameter(s) (fewer than " + std::to_string(kMinPointsPerParameter) +
+                           " per parameter): the fit and its standard errors are not meaningful");
+  for (int i = 0; i < p; ++i)
+    if (res.parameter_std_errors[i] > std::fabs(res.parameters[i]))
+      res.warnings.push_back("the standard error of " + res.parameter_names[i] + " (" +
+                             Fmt(res.parameter_std_errors[i]) + ") is larger than its value (" +
+                             Fmt(res.parameters[i]) + "): the data do not determine it");
   return res;
 }
 

@@ -65,6 +65,7 @@ bool DesignVariables::IsValid(std::string* error) const {
   const auto fin = [](double v) { return std::isfinite(v); };
   // clang-format off
   const bool ok = Check(fin(displacement_t) && displacement_t > 0, "displacement_t", displacement_t, "must be > 0 t", error) &&
+      Check(displacement_t <= 1e7, "displacement_t", displacement_t, "must be <= 1e7 t (the largest ships displace under 1e6 t)", error) &&
       Check(fin(rho_kg_m3) && rho_kg_m3 > 0, "rho_kg_m3", rho_kg_m3, "must be > 0 kg/m^3", error) &&
       Check(fin(L_over_B) && L_over_B > 1, "L_over_B", L_over_B, "must be > 1", error) &&
       Check(fin(B_over_T) && B_over_T > 0, "B_over_T", B_over_T, "must be > 0", error) &&

@@ -23,7 +23,7 @@ for n in "${names[@]}"; do
   cp tests/fuzz/corpus/"$n"/* "$work"/
   start=$(date +%s)
   # -timeout: one input taking longer is a hang; -rss_limit_mb: one input exhausting memory is a bug too.
-  if ! ./build-fuzz/fuzz_"$n" "$work" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 \
+  if ! ./build-fuzz/tests/fuzz/fuzz_"$n" "$work" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 \
        -max_len=65536 -artifact_prefix=build-fuzz/findings/"$n"- -print_final_stats=1 \
        > build-fuzz/"$n".log 2>&1; then
     echo "fuzz_$n: FAILED (see build-fuzz/$n.log and build-fuzz/findings/)"; tail -30 build-fuzz/"$n".log; status=1

@@ -262,6 +262,27 @@ w cal_missing "speed: { Fn: 0.75 }
 calibrate: { data: [$T/none.csv], mode: single, $CAL_MODEL }"
 run calibrate_missing_data 1 "none.csv" - -- calibrate "$T/cal_missing.yaml" --out "$T/o48"
 
+DESC='`draught_m: 1e300`'
+w draught "hull: { offsets_csv: data/delft372/delft372_offsets.csv, draught_m: 1e300 }"
+run draught_huge 1 "key 'hull.draught_m' = 1e300: is not a hull dimension" - -- hull "$T/draught.yaml" --out "$T/o49"
+DESC='`displacement_t: 1e12`'
+w disp "hull: { parametric: { type: catamaran, displacement_t: 1e12, L_over_B: 11, B_over_T: 2, Cb: 0.4, Cp: 0.69, Cwp: 0.76, LCB_pct_L: 0, LCF_pct_L: 0 } }"
+run displacement_huge 1 "must be <= 1e7 t" - -- hull "$T/disp.yaml" --out "$T/o50"
+DESC='Table 1 SW1 SWATH: a 10 m/m heave resonance (warning case)'
+{ sed -n '/^hull:/,/^speed:/p' configs/davis-holloway-2003/hull09_SW1.yaml
+  echo "solver: { sections: 20, panels: 8, frequencies: { range: { quantity: lambda_over_L, from: 0.5, to: 4, count: 30 } } }"; } > "$T/sw1.yaml"
+run sw1_resonance 0 "heave RAO peaks at" "{T}/o51/rao.csv" -- rao "$T/sw1.yaml" --out "$T/o51"
+
+# Not a row: without a mass block, hydrostatics.json's KG is the documented default, the draught.
+w nomass "hull: { parametric: { $P } }"
+if "$BIN" hull "$T/nomass.yaml" --out "$T/nomass" > /dev/null 2>&1; then
+  kg=$(sed -n 's/^ *"kg_m": \([^,]*\),*/\1/p' "$T/nomass/hydrostatics.json")
+  t=$(sed -n 's/^ *"T_m": \([^,]*\),*/\1/p' "$T/nomass/hydrostatics.json")
+  [ "$kg" = "$t" ] || { echo "FAIL no mass block: kg_m $kg is not the draught $t"; fail=1; }
+else
+  echo "FAIL no mass block: hull refused it"; fail=1
+fi
+
 if [ $fail -ne 0 ]; then echo "bad_inputs_table: failures among $n cases"; exit 1; fi
 [ "$TABLE" = "--table" ] || echo "bad_inputs_table: all $n cases behave as docs/bad-inputs.md states"
 exit 0

@@ -399,3 +399,16 @@ TEST_CASE("an all-zero measured quantity gives no peak comparison (no division b
   REQUIRE_FALSE(r.warnings.empty());
   CHECK(r.warnings.back().find("every measured pitch RAO is 0") != std::string::npos);
 }
+
+TEST_CASE("too few points per parameter is a warning, not a silent 'converged'", "[calibration]") {
+  // One tank row: a heave and a pitch residual for one parameter, below the stated minimum of 3 per parameter.
+  LinearModel m;
+  m.ah = {{1.0}};
+  m.bh = {{-3.0}};
+  m.ap = {{0.8}};
+  m.bp = {{-2.0}};
+  const auto r = CalibrateCs(m, {MakeCase("A", {0.85}, {0.7})}, CsCalibrationOptions{});
+  bool warned = false;
+  for (const auto& w : r.warnings) warned = warned || w.find("fewer than 3 per parameter") != std::string::npos;
+  CHECK(warned);
+}
