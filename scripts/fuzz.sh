@@ -11,7 +11,7 @@ names=("$@")
 CXX_CLANG="$(command -v clang++-14 || command -v clang++)"
 C_CLANG="$(command -v clang-14 || command -v clang)"
 cmake -S . -B build-fuzz -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_COMPILER="$CXX_CLANG" \
-  -DCMAKE_C_COMPILER="$C_CLANG" -DHULLOPT_FUZZ=ON -DHULLOPT_TESTS=OFF -DHULLOPT_BENCHMARKS=OFF \
+  -DCMAKE_C_COMPILER="$C_CLANG" -DHULLOPT_FUZZ=ON -DHULLOPT_TESTS=OFF -DHULLOPT_BENCHMARKS=OFF -DHULLOPT_PYTHON=OFF \
   -DHULLOPT_OPENMP=OFF > build-fuzz-configure.log
 targets=()
 for n in "${names[@]}"; do targets+=("fuzz_$n"); done
