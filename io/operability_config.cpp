@@ -5,36 +5,10 @@
 #include <sstream>
 
 #include "io/config_path.h"
+#include "io/csv_fields.h"
 #include "io/input_error.h"
 
 namespace hullopt::io {
-namespace {
-
-std::vector<std::string> SplitCsv(const std::string& line) {
-  std::vector<std::string> out;
-  std::string cell;
-  std::istringstream is(line);
-  while (std::getline(is, cell, ',')) {
-    const size_t a = cell.find_first_not_of(" \t\r"), b = cell.find_last_not_of(" \t\r");
-    out.push_back(a == std::string::npos ? "" : cell.substr(a, b - a + 1));
-  }
-  if (!line.empty() && line.back() == ',') out.push_back("");
-  return out;
-}
-
-double ParseNumber(const std::string& s, const std::string& where) {
-  size_t used = 0;
-  double v = 0.0;
-  try {
-    v = std::stod(s, &used);
-  } catch (const std::exception&) {
-    used = 0;
-  }
-  if (used != s.size() || !std::isfinite(v)) throw InputError(where + ": '" + s + "' is not a finite number");
-  return v;
-}
-
-}  // namespace
 
 sk::ScatterDiagram ReadScatterCsv(const std::string& path, double scale) {
   std::ifstream f(path);
@@ -48,7 +22,7 @@ sk::ScatterDiagram ReadScatterCsv(const std::string& path, double scale) {
     ++n;
     const std::string where = path + ":" + std::to_string(n);
     if (line.find_first_not_of(" \t\r") == std::string::npos || line[line.find_first_not_of(" \t")] == '#') continue;
-    const std::vector<std::string> c = SplitCsv(line);
+    const std::vector<std::string> c = SplitCsvTrimmed(line);
     if (!header) {
       const std::string h = c.empty() ? "" : c[0];
       if (h == "Hs_m\\Tz_s" || h == "Hs_m/Tz_s")
@@ -58,7 +32,7 @@ sk::ScatterDiagram ReadScatterCsv(const std::string& path, double scale) {
       else
         throw InputError(where + ": the first row must start with Hs_m\\Tz_s or Hs_m\\Tp_s, not '" + h + "'");
       for (size_t j = 1; j < c.size(); ++j) {
-        const double t = ParseNumber(c[j], where + ", column " + std::to_string(j + 1));
+        const double t = ParseCsvNumber(c[j], where, "column " + std::to_string(j + 1));
         if (!(t > 0.0)) throw InputError(where + ", column " + std::to_string(j + 1) + ": period must be > 0 s");
         periods.push_back(t);
       }
@@ -69,12 +43,12 @@ sk::ScatterDiagram ReadScatterCsv(const std::string& path, double scale) {
     if (c.size() > periods.size() + 1)
       throw InputError(where + ": " + std::to_string(c.size()) + " cells, more than the " +
                        std::to_string(periods.size() + 1) + " of the header");
-    const double hs = ParseNumber(c[0], where + ", column 1");
+    const double hs = ParseCsvNumber(c[0], where, "column 1 (Hs_m)");
     if (!(hs > 0.0)) throw InputError(where + ", column 1: Hs must be > 0 m");
     for (size_t j = 1; j < c.size(); ++j) {
       if (c[j].empty()) continue;
       const std::string cw = where + ", column " + std::to_string(j + 1);
-      const double p = ParseNumber(c[j], cw);
+      const double p = ParseCsvNumber(c[j], where, "column " + std::to_string(j + 1));
       if (p < 0.0) throw InputError(cw + ": probability " + c[j] + " must be >= 0");
       if (p > 0.0) d.cells.push_back({hs, periods[j - 1], p * scale});
     }
