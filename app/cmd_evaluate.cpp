@@ -36,6 +36,8 @@
 #include "io/input_error.h"
 #include "io/rao_table_csv.h"
 #include "io/seas_config.h"
+#include "io/operability_config.h"
+#include "io/operability_output.h"
 #include "io/yaml_map.h"
 #include "seakeeping/motions/rao_checks.h"
 #include "seas/design_evaluation.h"
@@ -182,6 +184,7 @@ void Run(const std::string& config_file, const std::string& out_dir) {
   // Points are checked against each design's hull below (designs differ in length).
   const std::vector<sk::PassengerPosition> points = io::ReadPassengerPoints(positions, nullptr);
   positions.Finish();
+  const io::OperabilityConfig operability = io::ParseOperability(root, config_file, points);
   io::YamlMap report_map = root.MapOrEmpty("report");
   io::EvaluationReportOptions report;
   report.plots = report_map.Boolean("plots", true);
@@ -209,8 +212,32 @@ void Run(const std::string& config_file, const std::string& out_dir) {
     designs.push_back(in.design);
   }
 
+  std::vector<io::DesignOperability> operabilities;
+  if (operability.present) {
+    for (const auto& d : designs) {
+      try {
+        operabilities.push_back({d.name, sk::EvaluateOperability(d.rao, d.hull, operability.diagram,
+                                                                 operability.criteria, points, options)});
+      } catch (const std::invalid_argument& e) {
+        throw io::InputError(config_file + ": key 'operability': design '" + d.name + "': " + e.what());
+      }
+    }
+  }
+
   PrepareOutputDir(out_dir, "evaluate", config_file, root.resolved());
-  const auto files = io::WriteEvaluationOutputs(out_dir, designs, options, report);
+  auto files = io::WriteEvaluationOutputs(out_dir, designs, options, report);
+  if (operability.present) {
+    for (const auto& f : io::WriteOperabilityOutputs(out_dir, operabilities, operability.diagram,
+                                                     operability.criteria, operability.scatter_csv))
+      files.push_back(f);
+    for (const auto& o : operabilities) {
+      std::printf("operability %-16s weighted mean MSI %.2f %%, all criteria met %.1f %% of the time",
+                  o.name.c_str(), o.result.weighted_mean_msi_pct, o.result.all_criteria_time_pct);
+      for (size_t k = 0; k < operability.criteria.size(); ++k)
+        std::printf("; %s %.1f %%", operability.criteria[k].name.c_str(), o.result.criterion_time_pct[k]);
+      std::printf("\n");
+    }
+  }
   for (const auto& w : io::EvaluationWarnings(designs, report))
     std::cerr << "hullopt: warning: " << w << "\n";
 

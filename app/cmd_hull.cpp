@@ -22,7 +22,7 @@ namespace {
 
 // Top-level keys other commands own; a shared campaign config may carry them.
 const char* const kOtherCommandsKeys[] = {"solver",    "seas",     "section", "optimize",
-                                          "calibrate", "evaluate", "explore"};
+                                          "calibrate", "evaluate", "explore", "resistance"};
 
 void RunHull(const std::string& config, const std::string& out_dir) {
   io::YamlMap root = io::YamlMap::LoadFile(config);

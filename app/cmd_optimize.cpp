@@ -15,6 +15,7 @@
 #include "app/commands.h"
 #include "app/mpi_context.h"
 #include "app/output_dir.h"
+#include "app/pareto_sweep.h"
 #include "app/progress.h"
 #include "hullopt/version.h"
 #include "io/campaign_outputs.h"
@@ -257,7 +258,15 @@ void AddOptimizeCommand(CLI::App& app) {
   cmd->add_option("--out", o->out, "output folder (history.csv, best.yaml, summary.json)")->required();
   cmd->add_option("--threads", o->threads, "OpenMP threads per process (0 = OpenMP default)");
   cmd->add_flag("--quiet", o->quiet, "no progress output");
-  cmd->callback([o] { RunOptimize(*o); });
+  cmd->callback([o] {
+    if (!HasParetoSweep(o->config)) return RunOptimize(*o);
+    RunParetoSweep(o->config, o->out, [o](const std::string& config, const std::string& out) {
+      OptimizeOptions one = *o;
+      one.config = config;
+      one.out = out;
+      RunOptimize(one);
+    });
+  });
 }
 
 }  // namespace hullopt::app

@@ -10,6 +10,7 @@ void AddAllCommands(CLI::App& app) {
   AddOptimizeCommand(app);
   AddExploreCommand(app);
   AddCalibrateCommand(app);
+  AddResistanceCommand(app);
 }
 
 }  // namespace hullopt::app

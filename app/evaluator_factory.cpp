@@ -20,7 +20,7 @@ std::unique_ptr<opt::Evaluator> MakeEvaluator(io::YamlMap& root, io::YamlMap& bl
   std::string error;
   if (!o.IsValid(&error)) throw io::InputError(block.Where("objective") + ": " + error);
   // The analytic objective ignores the ship description; accept a full config so demos can reuse one.
-  for (const char* k : {"hull", "mass", "speed", "water", "solver", "seas", "section", "calibrate"})
+  for (const char* k : {"hull", "mass", "speed", "water", "solver", "seas", "section", "calibrate", "resistance"})
     root.Skip(k);
   return std::make_unique<opt::AnalyticEvaluator>(o);
 }

@@ -6,25 +6,29 @@
 
 #include "app/design_case.h"
 #include "io/input_error.h"
+#include "io/resistance_config.h"
 #include "io/seas_config.h"
 #include "io/speed_config.h"
+#include "resistance/calm_water_resistance.h"
 #include "seas/design_evaluation.h"
 
 namespace hullopt::app {
 namespace {
 
 const std::vector<std::string> kQuantities = {"L_m", "B_m",  "T_m",  "B_overall_m", "displacement_t", "Cb",
-                                              "Cp",  "Cwp", "Cvp", "Fr",          "GM_T_m",         "GM_L_m"};
+                                              "Cp",  "Cwp", "Cvp", "Fr",          "GM_T_m",         "GM_L_m",
+                                              "R_T_kN", "R_W_kN", "P_E_kW"};
 
 class MsiEvaluator : public opt::Evaluator {
  public:
   MsiEvaluator(YAML::Node base_config, std::string file, std::vector<std::string> variables,
                std::vector<sk::SeaState> seas, std::vector<double> weights, sk::EvaluationOptions eval,
-               std::string measure, int position, double kyy_over_L, double kg_over_T)
+               std::string measure, int position, double kyy_over_L, double kg_over_T,
+               res::ResistanceOptions resistance)
       : base_(std::move(base_config)), file_(std::move(file)), variables_(std::move(variables)),
         seas_(std::move(seas)), spectra_(sk::BuildSpectra(seas_)), weights_(std::move(weights)),
         eval_(eval), measure_(std::move(measure)), position_(position), kyy_over_L_(kyy_over_L),
-        kg_over_T_(kg_over_T) {}
+        kg_over_T_(kg_over_T), resistance_(resistance) {}
 
   opt::EvalResult Evaluate(const std::vector<double>& x) override {
     opt::EvalResult r;
@@ -55,19 +59,31 @@ class MsiEvaluator : public opt::Evaluator {
     for (std::size_t i = 0; i < ev.seas.size(); ++i) {
       const auto& s = ev.seas[i];
       const auto& p = position_ < 0 ? s.mean : s.positions[position_];
-      const double v = measure_ == "msi" ? p.msi_pct : p.rms_accel_g;
+      const double v = measure_ == "rms_accel" ? p.rms_accel_g : p.msi_pct;
       r.sea_values.push_back(v);
       sum += weights_[i] * v;
       wsum += weights_[i];
     }
     r.objective = sum / wsum;
+    // Calm-water resistance at the design speed (about 2 ms CPU for the default catamaran, bench_resistance).
+    res::ResistanceAtSpeed rs;
+    try {
+      rs = res::CalmWaterResistance(d.hull, resistance_).At(d.speed_m_s, d.water.rho_kg_m3, d.water.g_m_s2);
+    } catch (const std::invalid_argument& e) {
+      r.produced = false;
+      r.error = std::string("resistance: ") + e.what();
+      return r;
+    }
+    if (!rs.warning.empty()) r.warning += (r.warning.empty() ? "resistance: " : "; resistance: ") + rs.warning;
+    if (measure_ == "P_E_kW") r.objective = rs.P_E_W / 1e3;
     const auto& h = d.hydrostatics;
     double b_overall = 0;
     for (const auto& body : d.hull.bodies)
       for (const auto& st : body.stations)
         for (double y : st.y_m) b_overall = std::max(b_overall, 2 * (body.y_centre_m + y));
     r.quantities = {h.L_m, h.B_m, h.T_m, b_overall, h.displacement_t, h.Cb, h.Cp, h.Cwp, h.Cvp,
-                    d.speed_m_s / std::sqrt(d.water.g_m_s2 * h.L_m), h.gm_t_m, h.gm_l_m};
+                    d.speed_m_s / std::sqrt(d.water.g_m_s2 * h.L_m), h.gm_t_m, h.gm_l_m,
+                    rs.R_T_N / 1e3, rs.R_W_N / 1e3, rs.P_E_W / 1e3};
     return r;
   }
 
@@ -75,7 +91,7 @@ class MsiEvaluator : public opt::Evaluator {
     std::vector<std::string> n;
     for (std::size_t i = 0; i < seas_.size(); ++i) {
       char buf[96];
-      std::snprintf(buf, sizeof buf, "%s_Hs%.2g_Tz%.3g", measure_ == "msi" ? "msi_pct" : "rms_accel_g",
+      std::snprintf(buf, sizeof buf, "%s_Hs%.2g_Tz%.3g", measure_ == "rms_accel" ? "rms_accel_g" : "msi_pct",
                     seas_[i].Hs_m, seas_[i].Tz_s);
       n.push_back(buf);
     }
@@ -115,13 +131,14 @@ class MsiEvaluator : public opt::Evaluator {
   std::string measure_;
   int position_;
   double kyy_over_L_, kg_over_T_;
+  res::ResistanceOptions resistance_;
 };
 
 }  // namespace
 
 std::unique_ptr<opt::Evaluator> MakeMsiEvaluator(io::YamlMap& root, io::YamlMap& objective,
                                                  const opt::CampaignDefinition& campaign) {
-  const std::string measure = objective.Choice("measure", {"msi", "rms_accel"}, "msi");
+  const std::string measure = objective.Choice("measure", {"msi", "rms_accel", "P_E_kW"}, "msi");
   const std::string pos = objective.Choice("position", {"mean", "forward", "lcg", "transom"}, "mean");
   const int position = pos == "mean" ? -1 : pos == "forward" ? 0 : pos == "lcg" ? 1 : 2;
   const std::vector<sk::SeaState> seas = io::ReadSeas(root);
@@ -144,6 +161,7 @@ std::unique_ptr<opt::Evaluator> MakeMsiEvaluator(io::YamlMap& root, io::YamlMap&
   if (!(kyy_over_L > 0.05 && kyy_over_L < 0.5)) mass.Fail("kyy_over_L", "must be within 0.05..0.5");
   if (!(kg_over_T > 0 && kg_over_T < 10)) mass.Fail("kg_over_T", "must be within 0..10");
   mass.Finish();
+  const res::ResistanceOptions resistance = io::ParseResistanceConfig(root, false).options;
   // The base design is read (and checked) once now, so a bad base config fails before any evaluation.
   YAML::Node raw = YAML::Clone(root.raw());
   if (!raw["hull"] || !raw["hull"]["parametric"])
@@ -165,7 +183,7 @@ std::unique_ptr<opt::Evaluator> MakeMsiEvaluator(io::YamlMap& root, io::YamlMap&
   for (const char* k : {"hull", "water", "speed", "solver"})
     if (raw[k]) base[k] = YAML::Clone(raw[k]);
   return std::make_unique<MsiEvaluator>(base, root.file(), names, seas, weights, eval, measure, position,
-                                        kyy_over_L, kg_over_T);
+                                        kyy_over_L, kg_over_T, resistance);
 }
 
 }  // namespace hullopt::app

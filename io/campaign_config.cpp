@@ -22,8 +22,8 @@ CampaignConfig ReadCampaignConfig(YamlMap& root, const YAML::Node& raw_root, Cam
 
   // Keys of the other command are accepted (one config for both) and not recorded.
   if (explore) {
-    for (const char* k :
-         {"algorithm", "max_evaluations", "xtol_rel", "ftol_rel", "starts", "penalty_weight", "polish"})
+    for (const char* k : {"algorithm", "max_evaluations", "xtol_rel", "ftol_rel", "starts", "penalty_weight",
+                          "polish", "pareto"})
       b.Skip(k);
     cfg.explore.samples = b.Integer("samples", cfg.explore.samples);
     cfg.explore.method = b.Choice("method", {"sobol", "lhs"}, cfg.explore.method);

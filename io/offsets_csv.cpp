@@ -8,6 +8,7 @@
 #include <sstream>
 #include <vector>
 
+#include "io/csv_fields.h"
 #include "io/input_error.h"
 #include "io/input_limits.h"
 
@@ -30,17 +31,11 @@ std::string Trim(const std::string& s) {
   return s.substr(a, b - a + 1);
 }
 
-double ParseNumber(const std::string& field, const std::string& where, const char* column) {
-  const std::string t = Trim(field);
-  char* end = nullptr;
-  errno = 0;
-  const double v = std::strtod(t.c_str(), &end);
-  if (t.empty() || end != t.c_str() + t.size())
-    throw InputError(where + ": " + column + " = '" + t + "' is not a number");
-  if (!std::isfinite(v) || errno == ERANGE)
-    throw InputError(where + ": " + column + " = '" + t + "' must be a finite number");
+// A finite number that can be a hull coordinate (a keel at -1e300 m is refused, not integrated).
+double ParseCoordinate(const std::string& field, const std::string& where, const char* column) {
+  const double v = ParseCsvNumber(field, where, column);
   if (std::fabs(v) > kMaxCoordinate_m)
-    throw InputError(where + ": " + column + " = '" + t + "' is not a hull coordinate (|value| <= " +
+    throw InputError(where + ": " + column + " = '" + Trim(field) + "' is not a hull coordinate (|value| <= " +
                      std::to_string(int(kMaxCoordinate_m)) + " m)");
   return v;
 }
@@ -69,8 +64,8 @@ hull::Demihull ReadOffsetsCsv(const std::string& path, double draught_m) {
     if (f.size() < 3)
       throw InputError(where + ": malformed row '" + Trim(line) +
                        "': need at least 3 comma-separated values x_m,y_m,z_m");
-    const double x = ParseNumber(f[0], where, "x_m"), y = ParseNumber(f[1], where, "y_m"),
-                 z = ParseNumber(f[2], where, "z_m");
+    const double x = ParseCoordinate(f[0], where, "x_m"), y = ParseCoordinate(f[1], where, "y_m"),
+                 z = ParseCoordinate(f[2], where, "z_m");
     if (y < 0.0) throw InputError(where + ": y_m = " + Trim(f[1]) + " is negative (half-breadths are >= 0)");
     if (body.stations.empty() || x != body.stations.back().x_m) {
       if (!body.stations.empty()) {

@@ -8,6 +8,7 @@
 #include <sstream>
 #include <vector>
 
+#include "io/csv_fields.h"
 #include "io/input_error.h"
 #include "seakeeping/motions/rao_interpolation.h"
 
@@ -15,21 +16,6 @@ namespace hullopt::io {
 
 // An RAO above this is a unit or column error, not a motion: squared in the spectral moments it would overflow.
 constexpr double kMaxRaoAmplitude = 1000.0;
-namespace {
-
-std::vector<std::string> SplitCsv(const std::string& line) {
-  std::vector<std::string> out;
-  std::string cell;
-  std::istringstream in(line);
-  while (std::getline(in, cell, ',')) {
-    const size_t a = cell.find_first_not_of(" \t\r"), b = cell.find_last_not_of(" \t\r");
-    out.push_back(a == std::string::npos ? "" : cell.substr(a, b - a + 1));
-  }
-  if (!line.empty() && line.back() == ',') out.push_back("");
-  return out;
-}
-
-}  // namespace
 
 sk::RaoTable ReadRaoTableCsv(const std::string& path, double g) {
   std::ifstream f(path);
@@ -48,7 +34,7 @@ sk::RaoTable ReadRaoTableCsv(const std::string& path, double g) {
     ++line_no;
     if (line.find_first_not_of(" \t\r") == std::string::npos || line[line.find_first_not_of(" \t")] == '#')
       continue;
-    const auto cells = SplitCsv(line);
+    const auto cells = SplitCsvTrimmed(line);
     const std::string where = path + ":" + std::to_string(line_no);
     if (!header_line) {
       header_line = line_no;

@@ -1,0 +1,27 @@
+#pragma once
+// The ε-constraint Pareto sweep of `hullopt optimize` (optimize.pareto): the campaign objective (MSI or rms
+// acceleration) against a resistance quantity at the design speed.
+//
+//   optimize:
+//     pareto: { quantity: P_E_kW, points: 8, to: 11200 }   # from: optional (default: the anchor's minimum)
+//
+// 1. Anchor: the same campaign minimising the quantity itself (objective measure = quantity) → DIR/anchor.
+// 2. Points k = 1..points: minimise the campaign objective with <quantity>_max = ε_k, ε_k evenly spaced from
+//    `from` (default: the anchor's minimum + 0.1 %) to `to`, each started from the previous point's best design
+//    (feasible for the next, looser limit, so a local algorithm always has a feasible start) → DIR/point_k.
+// Every run is an ordinary optimize run (history.csv, best.yaml re-runnable, summary.json, resumable).
+// DIR/pareto.csv and DIR/pareto.svg collect the front.
+#include <functional>
+#include <string>
+
+namespace hullopt::app {
+
+/// True if the config's optimize block has a `pareto` key.
+bool HasParetoSweep(const std::string& config_file);
+
+/// Runs the sweep; `run_optimize(config, out)` runs one ordinary campaign. Throws io::InputError for a bad
+/// pareto block (fewer than 2 points, unknown quantity, to <= from, a quantity already constrained).
+void RunParetoSweep(const std::string& config_file, const std::string& out_dir,
+                    const std::function<void(const std::string&, const std::string&)>& run_optimize);
+
+}  // namespace hullopt::app
