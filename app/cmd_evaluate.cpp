@@ -60,7 +60,8 @@ struct DesignInput {
 void ComputeDesign(io::YamlMap& root, const std::string& file, DesignInput* in, double cs_override) {
   const DesignCase dc = LoadDesignCase(root, file, in->design.name);
   root.Finish();
-  in->design.rao = ComputeDesignRaos(dc, EvaluationFrequencies(), cs_override);
+  in->design.rao = ComputeDesignRaos(dc, SeaFrequencies(dc), cs_override);
+  in->design.frequency_advice = SeaFrequencyAdvice(dc, file);
   in->design.hull = dc.Extent();
   for (const auto& [k, v] : dc.Parameters()) in->design.parameters.emplace(k, v);
 }
@@ -106,6 +107,7 @@ DesignInput ReadDesign(io::YamlMap& m, const std::string& config_file, double g,
   std::string error;
   if (!in.design.hull.IsValid(&error)) throw io::InputError(in.where + ": " + error);
   in.design.rao = io::ReadRaoTableCsv(csv, g);
+  in.design.frequency_advice = "recompute " + csv + " over a wider range (hullopt rao, solver.frequencies)";
   return in;
 }
 
@@ -145,7 +147,8 @@ void Run(const std::string& config_file, const std::string& out_dir) {
     in.where = root.Where("hull");
     in.design.name = std::filesystem::path(config_file).stem().string();
     const DesignCase dc = LoadDesignCase(root, config_file, in.design.name);
-    in.design.rao = ComputeDesignRaos(dc, EvaluationFrequencies());
+    in.design.rao = ComputeDesignRaos(dc, SeaFrequencies(dc));
+    in.design.frequency_advice = SeaFrequencyAdvice(dc, config_file);
     in.design.hull = dc.Extent();
     in.design.parameters = dc.Parameters();
     inputs.push_back(in);
@@ -235,7 +238,10 @@ void AddEvaluateCommand(CLI::App& app) {
   auto out = std::make_shared<std::string>("out/evaluate");
   cmd->add_option("config", *config, "YAML config (rao_csv or designs, seas, msi, positions)")->required();
   cmd->add_option("--out", *out, "output folder")->capture_default_str();
-  cmd->callback([config, out] { Run(*config, *out); });
+  cmd->callback([config, out] {
+    const OutputFolderGuard lock(*out, "evaluate", *config);
+    Run(*config, *out);
+  });
 }
 
 }  // namespace hullopt::app

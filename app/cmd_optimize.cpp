@@ -71,6 +71,7 @@ void RunOptimize(const OptimizeOptions& o) {
   opt::ConstraintSet cs(def, evaluator.QuantityNames());
   io::HistoryLayout layout{def.VariableNames(), evaluator.SeaNames(), cs.ReportedQuantities()};
   CampaignJournal journal(o.out, "history.csv", layout, lc.config_hash, lc.resolved, cs, evaluator.QuantityNames().size());
+  journal.Verify(evaluator, def);
 
   opt::NloptDriver driver(def, evaluator);
   const long per_run = def.stopping.max_evaluations + (def.polish_algorithm.empty() ? 0 : def.polish_max_evaluations);
@@ -256,7 +257,10 @@ void AddOptimizeCommand(CLI::App& app) {
   cmd->add_option("--out", o->out, "output folder (history.csv, best.yaml, summary.json)")->required();
   cmd->add_option("--threads", o->threads, "OpenMP threads per process (0 = OpenMP default)");
   cmd->add_flag("--quiet", o->quiet, "no progress output");
-  cmd->callback([o] { RunOptimize(*o); });
+  cmd->callback([o] {
+    const OutputFolderGuard lock(o->out, "optimize", o->config);
+    RunOptimize(*o);
+  });
 }
 
 }  // namespace hullopt::app

@@ -7,11 +7,19 @@
 #include "io/speed_config.h"
 #include "seakeeping/motions/head_sea_ship_model.h"
 #include "seakeeping/motions/periodic_motion_solver.h"
+#include "seakeeping/motions/validity_range.h"
 
 namespace hullopt::app {
 namespace {
 
 sk::RaoSolverOptions SolverOptions(const DesignCase& d, double cs) { return io::RaoOptions(d.solver, d.name, cs); }
+
+// The 2D+t method's validity range (conventional strip theory has its own, low-Fn one: not flagged here).
+void AddValidityWarnings(const DesignCase& d, sk::RaoTable* t) {
+  if (d.solver.method != "time_domain_strip") return;
+  for (auto& w : sk::ValidityWarnings(d.speed_m_s, d.hydrostatics.L_m, d.water.g_m_s2, t->omega_rad_s))
+    t->warnings.push_back(std::move(w));
+}
 
 template <class F>
 auto Guard(const DesignCase& d, F&& f) -> decltype(f()) {
@@ -84,6 +92,7 @@ sk::RaoTable DesignRaosFromKernel(const DesignCase& d, const sk::StripKernel& ke
     const sk::HeadSeaShipModel model(kernel, d.mass, SolverOptions(d, cs).motion);
     sk::RaoTable t = sk::SolvePeriodicRaos(model, omega_rad_s);
     t.warnings = sk::StripKernelWarnings(kernel);
+    AddValidityWarnings(d, &t);
     return t;
   });
 }
@@ -92,9 +101,27 @@ sk::RaoTable ComputeDesignRaos(const DesignCase& d, const std::vector<double>& o
                                double cs_override) {
   const double cs = cs_override >= 0.0 ? cs_override : d.solver.cs;
   return Guard(d, [&] {
-    return sk::ComputeRaos(d.hull, d.mass, d.speed_m_s, d.water.rho_kg_m3, d.water.g_m_s2, omega_rad_s,
-                           SolverOptions(d, cs), sk::TransientGreenKernelBuilder(d.solver.Force()));
+    sk::RaoTable t = sk::ComputeRaos(d.hull, d.mass, d.speed_m_s, d.water.rho_kg_m3, d.water.g_m_s2,
+                                     omega_rad_s, SolverOptions(d, cs),
+                                     sk::TransientGreenKernelBuilder(d.solver.Force()));
+    AddValidityWarnings(d, &t);
+    return t;
   });
+}
+
+std::vector<double> SeaFrequencies(const DesignCase& d) {
+  if (!d.has_frequencies) return EvaluationFrequencies();
+  try {
+    return sk::WaveFrequencies(d.solver.frequencies, d.speed_m_s, d.water.g_m_s2, d.hydrostatics.L_m);
+  } catch (const std::invalid_argument& e) {
+    throw io::InputError("design '" + d.name + "': solver.frequencies: " + e.what());
+  }
+}
+
+std::string SeaFrequencyAdvice(const DesignCase& d, const std::string& config_file) {
+  return d.has_frequencies ? "extend solver.frequencies in " + config_file
+                           : "add solver.frequencies to " + config_file +
+                                 " (without it the grid is omega 0.2..3 rad/s)";
 }
 
 std::vector<double> EvaluationFrequencies(int count) {

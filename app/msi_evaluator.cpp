@@ -35,19 +35,15 @@ class MsiEvaluator : public opt::Evaluator {
       r.error = e.what();
       return r;
     }
-    const sk::RaoTable rao = ComputeDesignRaos(d, EvaluationFrequencies());
+    const sk::RaoTable rao = ComputeDesignRaos(d, SeaFrequencies(d));
     for (const auto& w : rao.warnings) r.warning += (r.warning.empty() ? "" : "; ") + w;
     const sk::DesignEvaluation ev = sk::EvaluateDesign(rao, d.Extent(), spectra_, {}, eval_);
-    double sum = 0, wsum = 0;
     for (std::size_t i = 0; i < ev.seas.size(); ++i) {
       const auto& s = ev.seas[i];
       const auto& p = position_ < 0 ? s.mean : s.positions[position_];
-      const double v = measure_ == "msi" ? p.msi_pct : p.rms_accel_g;
-      r.sea_values.push_back(v);
-      sum += weights_[i] * v;
-      wsum += weights_[i];
+      r.sea_values.push_back(measure_ == "msi" ? p.msi_pct : p.rms_accel_g);
     }
-    r.objective = sum / wsum;
+    r.objective = WeightedMean(r.sea_values);
     const auto& h = d.hydrostatics;
     double b_overall = 0;
     for (const auto& body : d.hull.bodies)
@@ -56,6 +52,10 @@ class MsiEvaluator : public opt::Evaluator {
     r.quantities = {h.L_m, h.B_m, h.T_m, b_overall, h.displacement_t, h.Cb, h.Cp, h.Cwp, h.Cvp,
                     d.speed_m_s / std::sqrt(d.water.g_m_s2 * h.L_m), h.gm_t_m, h.gm_l_m};
     return r;
+  }
+
+  double ObjectiveImplied(const std::vector<double>&, const std::vector<double>& sea_values) const override {
+    return sea_values.size() == weights_.size() ? WeightedMean(sea_values) : NAN;
   }
 
   std::vector<std::string> SeaNames() const override {
@@ -78,6 +78,14 @@ class MsiEvaluator : public opt::Evaluator {
   bool IsThreadSafe() const override { return false; }
 
  private:
+  double WeightedMean(const std::vector<double>& v) const {
+    double sum = 0, wsum = 0;
+    for (std::size_t i = 0; i < v.size(); ++i) {
+      sum += weights_[i] * v[i];
+      wsum += weights_[i];
+    }
+    return sum / wsum;
+  }
   DesignCase Build(const std::vector<double>& x) const {
     YAML::Node cfg = YAML::Clone(base_);
     for (std::size_t i = 0; i < variables_.size(); ++i) cfg["hull"]["parametric"][variables_[i]] = x[i];

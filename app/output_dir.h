@@ -2,7 +2,10 @@
 // Creating a run's output folder and writing what every run leaves behind: the resolved config and the version.
 #include <yaml-cpp/yaml.h>
 
+#include <memory>
 #include <string>
+
+#include "io/output_lock.h"
 
 namespace hullopt::app {
 
@@ -10,6 +13,19 @@ namespace hullopt::app {
 /// and the source config) and VERSION. Throws io::InputError if the folder cannot be created or written.
 void PrepareOutputDir(const std::string& dir, const std::string& command, const std::string& config_file,
                       const YAML::Node& resolved);
+
+/// The output folder's lock for the whole run of a command (io::OutputFolderLock): taken by MPI rank 0 only
+/// (the only writer); a refusal is shared so that every rank stops with the same error. Prints a note on stderr
+/// when it takes over the stale lock of a run that was killed. The folder and config paths are checked to be
+/// UTF-8 first (they appear in JSON outputs and messages).
+class OutputFolderGuard {
+ public:
+  OutputFolderGuard(const std::string& dir, const std::string& command, const std::string& config_file);
+  ~OutputFolderGuard();
+
+ private:
+  std::unique_ptr<io::OutputFolderLock> lock_;
+};
 
 /// Path join: dir + "/" + name.
 std::string OutPath(const std::string& dir, const std::string& name);

@@ -1,4 +1,5 @@
 #include "io/bodyplan_svg.h"
+#include "io/atomic_file.h"
 
 #include <algorithm>
 #include <cmath>
@@ -87,9 +88,7 @@ void WriteBodyPlanSvg(const std::string& path, const hull::HullForm& hull, const
     }
   }
   svg << "</svg>\n";
-  std::ofstream out(path);
-  if (!out) throw InputError(path + ": cannot write body plan");
-  out << svg.str();
+  WriteFileAtomically(path, svg.str());
 }
 
 }  // namespace hullopt::io

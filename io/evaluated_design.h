@@ -16,6 +16,9 @@ struct EvaluatedDesign {
   sk::RaoTable rao;
   sk::HullExtent hull;
   sk::DesignEvaluation evaluation;  ///< sk::EvaluateDesign(rao, hull, seas, ...)
+  /// How to widen the RAO frequency range, for warnings: names the key that sets it (solver.frequencies of the
+  /// design config) or the RAO file to recompute.
+  std::string frequency_advice;
 };
 
 }  // namespace hullopt::io

@@ -1,4 +1,5 @@
 #include "io/hydrostatics_json.h"
+#include "io/atomic_file.h"
 
 #include <cmath>
 #include <fstream>
@@ -62,9 +63,7 @@ void WriteHydrostaticsJson(const std::string& path, const hull::HullForm& hull, 
   j["gm_t_m"] = h.gm_t_m;
   j["wetted_surface_m2"] = h.wetted_surface_m2;
   j["heave_stiffness_N_per_m"] = r.rho_kg_m3 * r.g_m_s2 * h.awp_m2;
-  std::ofstream out(path);
-  if (!out) throw InputError(path + ": cannot write hydrostatics file");
-  out << j.dump(2) << "\n";
+  WriteFileAtomically(path, j.dump(2) + "\n");
 }
 
 }  // namespace hullopt::io

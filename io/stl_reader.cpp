@@ -1,4 +1,5 @@
 #include "io/stl_reader.h"
+#include "io/atomic_file.h"
 
 #include <algorithm>
 #include <cmath>
@@ -233,8 +234,7 @@ hull::Demihull SliceStl(const StlMesh& mesh, int stations, double draught_m, con
 }
 
 void WriteBinaryStl(const std::string& path, const StlMesh& mesh) {
-  std::ofstream out(path, std::ios::binary);
-  if (!out) throw InputError(path + ": cannot write STL file");
+  std::ostringstream out(std::ios::binary);
   char header[80] = "hullopt binary STL";
   out.write(header, 80);
   const uint32_t n = uint32_t(mesh.triangles.size());
@@ -250,6 +250,7 @@ void WriteBinaryStl(const std::string& path, const StlMesh& mesh) {
     const uint16_t attr = 0;
     out.write(reinterpret_cast<const char*>(&attr), 2);
   }
+  WriteFileAtomically(path, out.str());
 }
 
 }  // namespace hullopt::io

@@ -2,6 +2,9 @@
 
 #include <cmath>
 #include <fstream>
+#include <sstream>
+
+#include "io/utf8_text.h"
 
 namespace hullopt::io {
 namespace {
@@ -32,9 +35,12 @@ YamlMap::YamlMap(const YAML::Node& node, std::string path, std::string file, YAM
 YamlMap YamlMap::LoadFile(const std::string& file) {
   std::ifstream in(file);
   if (!in) throw InputError(file + ": cannot open config file (does it exist and is it readable?)");
+  std::ostringstream text;
+  text << in.rdbuf();
+  RequireUtf8(text.str(), file);
   YAML::Node root;
   try {
-    root = YAML::Load(in);
+    root = YAML::Load(text.str());
   } catch (const YAML::Exception& e) {
     throw InputError(file + ":" + std::to_string(e.mark.line + 1) + ": YAML syntax error: " + e.msg);
   }
