@@ -6,8 +6,8 @@
 
 #include "app/design_case.h"
 #include "io/input_error.h"
-#include "optimizer/tank_rao_frequency.h"
 #include "optimizer/synthetic_oscillator_rao.h"
+#include "optimizer/tank_rao_frequency.h"
 #include "seakeeping/motions/validity_range.h"
 
 namespace hullopt::app {

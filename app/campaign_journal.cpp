@@ -1,5 +1,4 @@
 #include "app/campaign_journal.h"
-#include "io/atomic_file.h"
 
 #include <algorithm>
 #include <cmath>
@@ -9,6 +8,7 @@
 
 #include "app/mpi_context.h"
 #include "app/output_dir.h"
+#include "io/atomic_file.h"
 #include "io/campaign_outputs.h"
 #include "io/input_error.h"
 #include "io/yaml_difference.h"

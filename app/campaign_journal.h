@@ -13,8 +13,8 @@
 #include "io/history_csv.h"
 #include "optimizer/campaign.h"
 #include "optimizer/constraint_set.h"
-#include "optimizer/evaluator.h"
 #include "optimizer/evaluation_record.h"
+#include "optimizer/evaluator.h"
 
 namespace hullopt::app {
 

@@ -8,9 +8,9 @@
 #include <stdexcept>
 
 #include "app/calibration_model.h"
-#include "io/atomic_file.h"
 #include "app/commands.h"
 #include "app/output_dir.h"
+#include "io/atomic_file.h"
 #include "io/calibrate_config.h"
 #include "io/calibration_output.h"
 #include "io/calibration_plot.h"

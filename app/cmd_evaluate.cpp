@@ -29,9 +29,9 @@
 #include <stdexcept>
 
 #include "app/commands.h"
-#include "io/config_path.h"
 #include "app/design_case.h"
 #include "app/output_dir.h"
+#include "io/config_path.h"
 #include "io/evaluation_report.h"
 #include "io/input_error.h"
 #include "io/rao_table_csv.h"

@@ -17,9 +17,9 @@
 #include "io/yaml_map.h"
 #include "optimizer/rao_peak.h"
 #include "parametric_hull/hydrostatics.h"
-#include "seakeeping/strip/impulsive_strip_kernel.h"
 #include "seakeeping/motions/rao_solver.h"
 #include "seakeeping/motions/validity_range.h"
+#include "seakeeping/strip/impulsive_strip_kernel.h"
 
 namespace hullopt::app {
 namespace {

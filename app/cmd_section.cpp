@@ -10,15 +10,15 @@
 #include <stdexcept>
 
 #include "app/commands.h"
-#include "io/atomic_file.h"
 #include "app/output_dir.h"
+#include "io/atomic_file.h"
 #include "io/input_error.h"
-#include "seakeeping/strip/td_heave_coefficients.h"
 #include "io/section_config.h"
 #include "io/svg_plot.h"
 #include "io/yaml_map.h"
 #include "seakeeping/sections/frequency_domain_section.h"
 #include "seakeeping/sections/section_strip.h"
+#include "seakeeping/strip/td_heave_coefficients.h"
 
 namespace hullopt::app {
 namespace {

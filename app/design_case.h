@@ -11,9 +11,9 @@
 #include "io/water_config.h"
 #include "io/yaml_map.h"
 #include "parametric_hull/hydrostatics.h"
-#include "seas/passenger_positions.h"
 #include "seakeeping/motions/rao_solver.h"
 #include "seakeeping/motions/rao_table.h"
+#include "seas/passenger_positions.h"
 
 namespace hullopt::app {
 

@@ -1,14 +1,14 @@
 #include "app/output_dir.h"
-#include "io/atomic_file.h"
 
-#include <filesystem>
 #include <cstdio>
-#include <utility>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <utility>
 
-#include "hullopt/version.h"
 #include "app/mpi_context.h"
+#include "hullopt/version.h"
+#include "io/atomic_file.h"
 #include "io/input_error.h"
 #include "io/utf8_text.h"
 

@@ -1,11 +1,11 @@
 #include "io/bodyplan_svg.h"
-#include "io/atomic_file.h"
 
 #include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <sstream>
 
+#include "io/atomic_file.h"
 #include "io/input_error.h"
 
 namespace hullopt::io {

@@ -1,10 +1,10 @@
 #include "io/campaign_outputs.h"
-#include "io/atomic_file.h"
 
 #include <cstdio>
 #include <fstream>
 #include <sstream>
 
+#include "io/atomic_file.h"
 #include "io/input_error.h"
 
 namespace hullopt::io {

@@ -3,9 +3,9 @@
 #include <map>
 #include <string>
 
+#include "seakeeping/motions/rao_table.h"
 #include "seas/design_evaluation.h"
 #include "seas/passenger_positions.h"
-#include "seakeeping/motions/rao_table.h"
 
 namespace hullopt::io {
 

@@ -1,5 +1,4 @@
 #include "io/evaluation_report.h"
-#include "io/atomic_file.h"
 
 #include <cmath>
 #include <cstdio>
@@ -8,6 +7,7 @@
 #include <sstream>
 
 #include "hullopt/version.h"
+#include "io/atomic_file.h"
 #include "io/input_error.h"
 #include "io/seakeeping_plots.h"
 #include "io/svg_plot.h"

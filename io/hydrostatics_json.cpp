@@ -1,10 +1,10 @@
 #include "io/hydrostatics_json.h"
-#include "io/atomic_file.h"
 
 #include <cmath>
 #include <fstream>
 #include <nlohmann/json.hpp>
 
+#include "io/atomic_file.h"
 #include "io/input_error.h"
 
 namespace hullopt::io {

@@ -1,5 +1,4 @@
 #include "io/offsets_csv.h"
-#include "io/atomic_file.h"
 
 #include <cerrno>
 #include <cmath>
@@ -9,6 +8,7 @@
 #include <sstream>
 #include <vector>
 
+#include "io/atomic_file.h"
 #include "io/input_error.h"
 
 namespace hullopt::io {

@@ -1,5 +1,4 @@
 #include "io/rao_csv_writer.h"
-#include "io/atomic_file.h"
 
 #include <cmath>
 #include <fstream>
@@ -7,6 +6,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "io/atomic_file.h"
 #include "io/input_error.h"
 
 namespace hullopt::io {

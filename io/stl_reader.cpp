@@ -1,5 +1,4 @@
 #include "io/stl_reader.h"
-#include "io/atomic_file.h"
 
 #include <algorithm>
 #include <cmath>
@@ -10,6 +9,7 @@
 #include <map>
 #include <sstream>
 
+#include "io/atomic_file.h"
 #include "io/input_error.h"
 
 namespace hullopt::io {

@@ -1,5 +1,4 @@
 #include "io/svg_plot.h"
-#include "io/atomic_file.h"
 
 #include <algorithm>
 #include <cmath>
@@ -8,6 +7,7 @@
 #include <limits>
 #include <sstream>
 
+#include "io/atomic_file.h"
 #include "io/input_error.h"
 
 namespace hullopt::io {

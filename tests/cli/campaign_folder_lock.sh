@@ -11,23 +11,9 @@ HULLOPT_MPI=${2:-}
 work=$(mktemp -d)
 trap 'kill $(jobs -p) 2>/dev/null; rm -rf "$work"' EXIT
 fail() { echo "FAIL: $*" >&2; exit 1; }
-write_config() {  # $1 file, $2 eval_delay_ms
-  cat > "$1" <<YAML
-# hullopt optimize
-optimize:
-  algorithm: LN_COBYLA
-  max_evaluations: 80
-  starts: 2
-  seed: 3
-  variables: { x1: [-2, 2], x2: [-2, 2] }
-  start: { x1: -0.5, x2: 0.5 }
-  constraints: { radius_sq_max: 1.0 }
-  objective: { analytic: rosenbrock, eval_delay_ms: $2 }
-YAML
-}
-write_config "$work/slow.yaml" 15
-write_config "$work/fast.yaml" 0
-strip() { awk -F, 'NR==1{for(i=1;i<=NF;i++) if($i=="wall_time_s") w=i} {s=""; for(i=1;i<=NF;i++) if(i!=w) s=s (s==""?"":",") $i; print s}' "$1"; }
+source "$(dirname "$0")/../support/cli_campaign.sh"
+write_rosenbrock_campaign "$work/slow.yaml" 15 80
+write_rosenbrock_campaign "$work/fast.yaml" 0 80
 "$HULLOPT" optimize "$work/fast.yaml" --out "$work/ref" --quiet || fail "reference run failed"
 
 # Two at once.
