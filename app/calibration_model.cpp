@@ -6,8 +6,9 @@
 
 #include "app/design_case.h"
 #include "io/input_error.h"
-#include "optimizer/tank_rao_frequency.h"
 #include "optimizer/synthetic_oscillator_rao.h"
+#include "optimizer/tank_rao_frequency.h"
+#include "seakeeping/motions/validity_range.h"
 
 namespace hullopt::app {
 namespace {
@@ -15,7 +16,7 @@ namespace {
 // The paper's method for the config's own hull: the strip kernels do not depend on Cs, so they are built once
 // per speed; each model call is then a 2×2 solve per measured frequency.
 opt::CsRaoModel StripSolverModel(io::YamlMap& root, const io::CalibrateHull& hull,
-                                 const std::vector<opt::CalibrationCase>& mine) {
+                                 const std::vector<opt::CalibrationCase>& mine, std::vector<std::string>* warnings) {
   if (!hull.name.empty())
     throw io::InputError(root.file() + ": calibrate.hulls['" + hull.name +
                          "']: the strip solver calibrates the config's own hull (the calibrate.data form); "
@@ -32,6 +33,10 @@ opt::CsRaoModel StripSolverModel(io::YamlMap& root, const io::CalibrateHull& hul
     s.design.speed_m_s = c.Fn * std::sqrt(base.water.g_m_s2 * base.hydrostatics.L_m);
     s.kernel = BuildDesignKernel(s.design);
     s.grid = opt::WaveFrequencyGrid(c, base.hydrostatics.L_m, base.water.g_m_s2);
+    if (warnings && base.solver.method == "time_domain_strip")
+      for (const auto& w : sk::ValidityWarnings(s.design.speed_m_s, base.hydrostatics.L_m, base.water.g_m_s2,
+                                                s.grid.omega_rad_s))
+        warnings->push_back("case '" + c.label + "': " + w);
     speeds->push_back(std::move(s));
   }
   return [speeds](double Cs, int local) {
@@ -49,7 +54,8 @@ opt::CsRaoModel StripSolverModel(io::YamlMap& root, const io::CalibrateHull& hul
 }  // namespace
 
 opt::CsRaoModel MakeCalibrationModel(io::YamlMap& root, const io::CalibrateConfig& config,
-                                     const std::vector<opt::CalibrationCase>& cases) {
+                                     const std::vector<opt::CalibrationCase>& cases,
+                                     std::vector<std::string>* warnings) {
   // Per hull: its cases (in global order) and a model over them with local case indices.
   struct Part {
     opt::CsRaoModel model;
@@ -69,7 +75,7 @@ opt::CsRaoModel MakeCalibrationModel(io::YamlMap& root, const io::CalibrateConfi
     if (hull.synthetic) {
       part.model = opt::MakeSyntheticOscillatorModel(*hull.synthetic, mine);
     } else {
-      part.model = StripSolverModel(root, hull, mine);
+      part.model = StripSolverModel(root, hull, mine, warnings);
     }
     parts->push_back(std::move(part));
   }

@@ -1,9 +1,14 @@
 #include "app/campaign_journal.h"
 
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
 #include <filesystem>
+#include <set>
 
 #include "app/mpi_context.h"
 #include "app/output_dir.h"
+#include "io/atomic_file.h"
 #include "io/campaign_outputs.h"
 #include "io/input_error.h"
 #include "io/yaml_difference.h"
@@ -53,9 +58,10 @@ CampaignJournal::CampaignJournal(const std::string& dir, const std::string& file
     }
   }
   for (const auto& row : log.rows) {
-    index_[{row.record.run, row.record.step}] = logged_.size();
+    index_.emplace(std::make_pair(row.record.run, row.record.step), logged_.size());
     logged_.push_back(FromRow(row));
   }
+  rows_ = log.rows;
   valid_bytes_ = log.exists ? log.valid_bytes : 0;
   truncated_tail_ = log.truncated_tail;
 }
@@ -69,9 +75,92 @@ opt::EvaluationRecord CampaignJournal::FromRow(const io::HistoryRow& row) const 
   return rec;
 }
 
+void CampaignJournal::Verify(opt::Evaluator& evaluator, const opt::CampaignDefinition& def) const {
+  std::string problem = MpiRank() == 0 ? FirstProblem(evaluator, def) : std::string();
+  problem = MpiBroadcast(problem);
+  if (!problem.empty())
+    throw io::InputError(problem + " (the log was edited or damaged: it cannot be replayed; delete " + path_ +
+                         " to start the campaign over)");
+}
+
+std::string CampaignJournal::FirstProblem(opt::Evaluator& evaluator, const opt::CampaignDefinition& def) const {
+  const auto lower = def.LowerBounds(), upper = def.UpperBounds();
+  auto where = [&](std::size_t i, const std::string& column) {
+    return path_ + ":" + std::to_string(i + 2) + ": column '" + column + "'";
+  };
+  auto num = [](double v) {
+    char buf[40];
+    std::snprintf(buf, sizeof buf, "%.17g", v);
+    return std::string(buf);
+  };
+  auto differs = [](double logged, double now) {
+    return !(std::fabs(logged - now) <= kSpotRelTol * std::max({std::fabs(logged), std::fabs(now), 1.0}));
+  };
+  std::set<std::pair<int, int>> seen;
+  for (std::size_t i = 0; i < rows_.size(); ++i) {
+    const opt::EvaluationRecord& rec = logged_[i];
+    for (std::size_t j = 0; j < rec.x.size(); ++j) {
+      if (rec.x[j] < lower[j] || rec.x[j] > upper[j])
+        return where(i, layout_.variables[j]) + " = " + num(rec.x[j]) + ": outside the variable's bounds [" +
+               num(lower[j]) + ", " + num(upper[j]) + "]";
+    }
+    if (!seen.insert({rec.run, rec.step}).second)
+      return where(i, "step") + ": run " + std::to_string(rec.run) + " step " + std::to_string(rec.step) +
+             " is logged twice";
+    if (rec.result.produced) {
+      const double implied = evaluator.ObjectiveImplied(rec.x, rec.result.sea_values);
+      if (std::isfinite(implied) && differs(rec.result.objective, implied))
+        return where(i, "objective") + " = " + num(rec.result.objective) + ": the row's design " +
+               (rec.result.sea_values.empty() ? "variables give " : "and per-sea values give ") + num(implied);
+    }
+    const bool feasible = constraints_.Feasible(rec.x, rec.result, def.feasibility_tol);
+    if (feasible != rec.feasible)
+      return where(i, "feasible") + " = " + (rec.feasible ? "1" : "0") + ": the row's own values give " +
+             (feasible ? "1" : "0") + " under the campaign's constraints";
+  }
+  // Spot check: recompute a few rows and compare every result column.
+  std::vector<std::size_t> spots;
+  const std::size_t n = rows_.size();
+  for (int k = 0; k < kSpotRows && n > 0; ++k) spots.push_back(k * (n - 1) / (kSpotRows - 1));
+  spots.erase(std::unique(spots.begin(), spots.end()), spots.end());
+  for (const std::size_t i : spots) {
+    const io::HistoryRow& row = rows_[i];
+    opt::EvaluationRecord now = row.record;
+    now.result = opt::EvaluateSafely(evaluator, row.record.x);
+    now.feasible = constraints_.Feasible(now.x, now.result, def.feasibility_tol);
+    // Through the row format, so that the message is compared as it is logged (commas replaced).
+    std::string line = io::FormatHistoryRow(row.evaluation, now, constraints_.ReportedValues(now.result), layout_);
+    line.pop_back();  // the newline
+    const io::HistoryRow again = io::ParseHistoryRow(line, layout_, "recomputed row");
+    char because[96];
+    std::snprintf(because, sizeof because, " (recomputed now: spot check of the log, relative tolerance %g)",
+                  kSpotRelTol);
+    const auto& a = row.record.result;
+    const auto& b = again.record.result;
+    if (a.produced != b.produced || a.error != b.error || a.warning != b.warning) {
+      auto shown = [](const opt::EvalResult& r) {
+        return r.produced ? (r.warning.empty() ? std::string() : io::kWarningPrefix + r.warning) : r.error;
+      };
+      return where(i, "message") + ": logged '" + shown(a) + "', the design gives '" + shown(b) + "'" + because;
+    }
+    if (!a.produced) continue;
+    if (differs(a.objective, b.objective))
+      return where(i, "objective") + " = " + num(a.objective) + ": the design gives " + num(b.objective) + because;
+    for (std::size_t j = 0; j < a.sea_values.size(); ++j)
+      if (differs(a.sea_values[j], b.sea_values[j]))
+        return where(i, layout_.seas[j]) + " = " + num(a.sea_values[j]) + ": the design gives " +
+               num(b.sea_values[j]) + because;
+    for (std::size_t j = 0; j < row.reported.size(); ++j)
+      if (differs(row.reported[j], again.reported[j]))
+        return where(i, layout_.quantities[j]) + " = " + num(row.reported[j]) + ": the design gives " +
+               num(again.reported[j]) + because;
+  }
+  return "";
+}
+
 void CampaignJournal::StartWriting() {
   if (MpiRank() != 0) return;
-  io::WriteTextFileDurably(hash_path_, config_hash_ + "\n");
+  io::WriteFileAtomically(hash_path_, config_hash_ + "\n");
   appender_ = std::make_unique<io::HistoryAppender>(path_, layout_, valid_bytes_);
 }
 

@@ -11,8 +11,10 @@
 #include <vector>
 
 #include "io/history_csv.h"
+#include "optimizer/campaign.h"
 #include "optimizer/constraint_set.h"
 #include "optimizer/evaluation_record.h"
+#include "optimizer/evaluator.h"
 
 namespace hullopt::app {
 
@@ -25,6 +27,24 @@ class CampaignJournal {
                   const std::string& config_hash, const YAML::Node& resolved,
                   const opt::ConstraintSet& constraints, std::size_t quantities);
   ~CampaignJournal();
+
+  /// Collective. Checks every logged row against what the campaign implies before it is replayed: design
+  /// variables within their bounds, (run, step) unique, the objective equal to what the row's variables and
+  /// per-sea values imply (Evaluator::ObjectiveImplied, where the evaluator can say), `feasible` equal to the
+  /// constraints applied to the row's own values; and recomputes a spot sample of rows (kSpotRows: the first, the last and evenly spaced
+  /// ones between) with the evaluator, whose objective, per-sea values, constrained quantities, status and
+  /// message must agree within kSpotRelTol. (Finite numbers and the refused/evaluated pattern are checked when
+  /// the file is read.) Throws io::InputError naming the file, line and column of the first mismatch.
+  void Verify(opt::Evaluator& evaluator, const opt::CampaignDefinition& def) const;
+
+  /// Rows recomputed by Verify: the first, the last and evenly spaced ones between (fewer if the log is short).
+  static constexpr int kSpotRows = 4;
+  /// Relative tolerance of the spot check and of the implied objective (plus the same absolute tolerance for values near 0). Evaluators are
+  /// deterministic bit for bit for one build (opt::Evaluator's contract; tests/cli/campaign_parallel.sh checks
+  /// it across thread counts), so an unchanged row agrees exactly with the binary that wrote it; 1e-9 leaves
+  /// room for a rebuild with different floating-point contraction or vectorisation (which changes sums of
+  /// the strip kernel by ~1e-13 relative) and for nothing a hand edit or damage would produce.
+  static constexpr double kSpotRelTol = 1e-9;
 
   /// Rank 0: opens the file for appending (dropping an incomplete last line, writing the header if new) and
   /// records the config hash. Call after the output folder is prepared, before the first evaluation.
@@ -51,12 +71,14 @@ class CampaignJournal {
 
  private:
   opt::EvaluationRecord FromRow(const io::HistoryRow& row) const;
+  std::string FirstProblem(opt::Evaluator& evaluator, const opt::CampaignDefinition& def) const;
 
   std::string dir_, path_, hash_path_, config_hash_;
   io::HistoryLayout layout_;
   const opt::ConstraintSet& constraints_;
   std::size_t quantities_;
   std::vector<opt::EvaluationRecord> logged_;
+  std::vector<io::HistoryRow> rows_;  ///< the logged rows as read (for Verify)
   std::map<std::pair<int, int>, std::size_t> index_;
   std::size_t valid_bytes_ = 0;
   bool truncated_tail_ = false;

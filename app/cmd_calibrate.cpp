@@ -10,6 +10,7 @@
 #include "app/calibration_model.h"
 #include "app/commands.h"
 #include "app/output_dir.h"
+#include "io/atomic_file.h"
 #include "io/calibrate_config.h"
 #include "io/calibration_output.h"
 #include "io/calibration_plot.h"
@@ -20,8 +21,7 @@ namespace hullopt::app {
 namespace {
 
 void Write(const std::string& path, const std::string& text) {
-  std::ofstream out(path);
-  if (!out || !(out << text)) throw io::InputError(path + ": cannot write output file");
+  io::WriteFileAtomically(path, text);
 }
 
 /// "Fn 0.75" → "Fn0.75", "hull A Fn 0.5" → "hull_A_Fn0.5": a file-name-safe label.
@@ -62,7 +62,8 @@ void RunCalibrate(const std::string& config_file, const std::string& out_dir) {
   if (!opt::CheckCalibrationData(cases, cfg.options, &error)) {
     throw io::InputError(config_file + ": calibrate data (" + files + "): " + error);
   }
-  const opt::CsRaoModel model = MakeCalibrationModel(root, cfg, cases);
+  std::vector<std::string> validity;
+  const opt::CsRaoModel model = MakeCalibrationModel(root, cfg, cases, &validity);
   root.Finish();
 
   // Ceres logs failed model evaluations through glog to stderr; CalibrateCs reports them in its warnings or
@@ -77,6 +78,7 @@ void RunCalibrate(const std::string& config_file, const std::string& out_dir) {
     throw io::InputError(config_file + ": " + e.what());
   }
 
+  r.warnings.insert(r.warnings.end(), validity.begin(), validity.end());
   PrepareOutputDir(out_dir, "calibrate", config_file, root.resolved());
   Write(OutPath(out_dir, "calibration.json"), io::CalibrationJson(cfg, cases, r));
   Write(OutPath(out_dir, "calibration_report.txt"), r.FullReport());
@@ -115,7 +117,10 @@ void AddCalibrateCommand(CLI::App& app) {
   auto out = std::make_shared<std::string>();
   cmd->add_option("CONFIG", *config, "YAML config with a 'calibrate:' section")->required();
   cmd->add_option("--out", *out, "output folder")->required();
-  cmd->callback([config, out] { RunCalibrate(*config, *out); });
+  cmd->callback([config, out] {
+    const OutputFolderGuard lock(*out, "calibrate", *config);
+    RunCalibrate(*config, *out);
+  });
 }
 
 }  // namespace hullopt::app

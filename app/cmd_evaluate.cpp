@@ -29,9 +29,9 @@
 #include <stdexcept>
 
 #include "app/commands.h"
-#include "io/config_path.h"
 #include "app/design_case.h"
 #include "app/output_dir.h"
+#include "io/config_path.h"
 #include "io/evaluation_report.h"
 #include "io/input_error.h"
 #include "io/rao_table_csv.h"
@@ -63,7 +63,8 @@ struct DesignInput {
 void ComputeDesign(io::YamlMap& root, const std::string& file, DesignInput* in, double cs_override) {
   const DesignCase dc = LoadDesignCase(root, file, in->design.name);
   root.Finish();
-  in->design.rao = ComputeDesignRaos(dc, EvaluationFrequencies(), cs_override);
+  in->design.rao = ComputeDesignRaos(dc, SeaFrequencies(dc), cs_override);
+  in->design.frequency_advice = SeaFrequencyAdvice(dc, file);
   in->design.hull = dc.Extent();
   for (const auto& [k, v] : dc.Parameters()) in->design.parameters.emplace(k, v);
 }
@@ -110,6 +111,7 @@ DesignInput ReadDesign(io::YamlMap& m, const std::string& config_file, double g,
   if (!in.design.hull.IsValid(&error)) throw io::InputError(in.where + ": " + error);
   in.design.rao = io::ReadRaoTableCsv(csv, g);
   in.design.rao.warnings = sk::RaoResonanceWarnings(in.design.rao);
+  in.design.frequency_advice = "recompute " + csv + " over a wider range (hullopt rao, solver.frequencies)";
   return in;
 }
 
@@ -149,7 +151,8 @@ void Run(const std::string& config_file, const std::string& out_dir) {
     in.where = root.Where("hull");
     in.design.name = std::filesystem::path(config_file).stem().string();
     const DesignCase dc = LoadDesignCase(root, config_file, in.design.name);
-    in.design.rao = ComputeDesignRaos(dc, EvaluationFrequencies());
+    in.design.rao = ComputeDesignRaos(dc, SeaFrequencies(dc));
+    in.design.frequency_advice = SeaFrequencyAdvice(dc, config_file);
     in.design.hull = dc.Extent();
     in.design.parameters = dc.Parameters();
     inputs.push_back(in);
@@ -266,7 +269,10 @@ void AddEvaluateCommand(CLI::App& app) {
   auto out = std::make_shared<std::string>("out/evaluate");
   cmd->add_option("config", *config, "YAML config (rao_csv or designs, seas, msi, positions)")->required();
   cmd->add_option("--out", *out, "output folder")->capture_default_str();
-  cmd->callback([config, out] { Run(*config, *out); });
+  cmd->callback([config, out] {
+    const OutputFolderGuard lock(*out, "evaluate", *config);
+    Run(*config, *out);
+  });
 }
 
 }  // namespace hullopt::app

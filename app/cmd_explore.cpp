@@ -55,6 +55,7 @@ void RunExplore(const ExploreCliOptions& o) {
   opt::ConstraintSet cs(def, evaluator.QuantityNames());
   io::HistoryLayout layout{def.VariableNames(), evaluator.SeaNames(), cs.ReportedQuantities()};
   CampaignJournal journal(o.out, "samples.csv", layout, lc.config_hash, lc.resolved, cs, evaluator.QuantityNames().size());
+  journal.Verify(evaluator, def);
   if (rank == 0) PrepareOutputDir(o.out, "explore", o.config, lc.resolved);
   journal.StartWriting();
 
@@ -203,7 +204,10 @@ void AddExploreCommand(CLI::App& app) {
   cmd->add_option("--threads", o->threads, "OpenMP threads per process (0 = OpenMP default)");
   cmd->add_option("--chunk", o->chunk, "samples per MPI rank and round (0 = 2 x threads)");
   cmd->add_flag("--quiet", o->quiet, "no progress output");
-  cmd->callback([o] { RunExplore(*o); });
+  cmd->callback([o] {
+    const OutputFolderGuard lock(o->out, "explore", o->config);
+    RunExplore(*o);
+  });
 }
 
 }  // namespace hullopt::app

@@ -82,7 +82,10 @@ void AddHullCommand(CLI::App& app) {
   cmd->add_option("config", *config, "YAML config with a hull: map (and optional water:, speed:, mass:)")
       ->required();
   cmd->add_option("--out", *out, "output folder")->required();
-  cmd->callback([config, out] { RunHull(*config, *out); });
+  cmd->callback([config, out] {
+    const OutputFolderGuard lock(*out, "hull", *config);
+    RunHull(*config, *out);
+  });
 }
 
 }  // namespace hullopt::app

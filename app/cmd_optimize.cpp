@@ -73,6 +73,7 @@ void RunOptimize(const OptimizeOptions& o) {
   opt::ConstraintSet cs(def, evaluator.QuantityNames());
   io::HistoryLayout layout{def.VariableNames(), evaluator.SeaNames(), cs.ReportedQuantities()};
   CampaignJournal journal(o.out, "history.csv", layout, lc.config_hash, lc.resolved, cs, evaluator.QuantityNames().size());
+  journal.Verify(evaluator, def);
 
   opt::NloptDriver driver(def, evaluator);
   const long per_run = def.stopping.max_evaluations + (def.polish_algorithm.empty() ? 0 : def.polish_max_evaluations);
@@ -259,6 +260,8 @@ void AddOptimizeCommand(CLI::App& app) {
   cmd->add_option("--threads", o->threads, "OpenMP threads per process (0 = OpenMP default)");
   cmd->add_flag("--quiet", o->quiet, "no progress output");
   cmd->callback([o] {
+    // One lock on the campaign folder for the whole run (a Pareto sweep's runs live inside it).
+    const OutputFolderGuard lock(o->out, "optimize", o->config);
     if (!HasParetoSweep(o->config)) return RunOptimize(*o);
     RunParetoSweep(o->config, o->out, [o](const std::string& config, const std::string& out) {
       OptimizeOptions one = *o;

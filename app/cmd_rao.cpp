@@ -17,8 +17,9 @@
 #include "io/yaml_map.h"
 #include "optimizer/rao_peak.h"
 #include "parametric_hull/hydrostatics.h"
-#include "seakeeping/strip/impulsive_strip_kernel.h"
 #include "seakeeping/motions/rao_solver.h"
+#include "seakeeping/motions/validity_range.h"
+#include "seakeeping/strip/impulsive_strip_kernel.h"
 
 namespace hullopt::app {
 namespace {
@@ -70,6 +71,8 @@ void RunRao(const std::string& config_file, const std::string& out_dir) {
     throw io::InputError(std::string("cannot compute RAOs: ") + e.what());
   }
   t.warnings.insert(t.warnings.begin(), input_warnings.begin(), input_warnings.end());
+  if (sc.method == "time_domain_strip")
+    for (auto& w : sk::ValidityWarnings(U, hs.L_m, water.g_m_s2, t.omega_rad_s)) t.warnings.push_back(std::move(w));
   for (const auto& w : t.warnings) std::fprintf(stderr, "hullopt: warning: hull '%s': %s\n", hull_name.c_str(), w.c_str());
   PrepareOutputDir(out_dir, "rao", config_file, root.resolved());
   std::ostringstream fn;
@@ -109,7 +112,10 @@ void AddRaoCommand(CLI::App& app) {
   auto out = std::make_shared<std::string>();
   cmd->add_option("config", *config, "YAML config (hull, mass, speed, water, solver)")->required();
   cmd->add_option("--out", *out, "output folder")->required();
-  cmd->callback([config, out] { RunRao(*config, *out); });
+  cmd->callback([config, out] {
+    const OutputFolderGuard lock(*out, "rao", *config);
+    RunRao(*config, *out);
+  });
 }
 
 }  // namespace hullopt::app

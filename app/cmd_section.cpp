@@ -11,13 +11,14 @@
 
 #include "app/commands.h"
 #include "app/output_dir.h"
+#include "io/atomic_file.h"
 #include "io/input_error.h"
-#include "seakeeping/strip/td_heave_coefficients.h"
 #include "io/section_config.h"
 #include "io/svg_plot.h"
 #include "io/yaml_map.h"
 #include "seakeeping/sections/frequency_domain_section.h"
 #include "seakeeping/sections/section_strip.h"
+#include "seakeeping/strip/td_heave_coefficients.h"
 
 namespace hullopt::app {
 namespace {
@@ -66,8 +67,7 @@ MethodCurve RunMethod(const std::string& method, const Strip& strip, const io::S
 }
 
 void WriteCsv(const std::vector<MethodCurve>& curves, const std::string& path) {
-  std::ofstream os(path);
-  if (!os) throw io::InputError(path + ": cannot write");
+  std::ostringstream os;
   os << "method,omega_rad_s,a33_kg_per_m,b33_kg_per_m_s\n";
   char line[256];
   for (const auto& c : curves) {
@@ -77,7 +77,7 @@ void WriteCsv(const std::vector<MethodCurve>& curves, const std::string& path) {
       os << line;
     }
   }
-  if (!os) throw io::InputError(path + ": write failed");
+  io::WriteFileAtomically(path, os.str());
 }
 
 void WritePlot(const std::vector<MethodCurve>& curves, const io::SectionRunConfig& cfg,
@@ -148,7 +148,10 @@ void AddSectionCommand(CLI::App& app) {
                   "YAML config with a section: block (see examples/section_semicircle.yaml)")
       ->required();
   cmd->add_option("--out", *out, "output folder")->required();
-  cmd->callback([config, out] { RunSection(*config, *out); });
+  cmd->callback([config, out] {
+    const OutputFolderGuard lock(*out, "section", *config);
+    RunSection(*config, *out);
+  });
 }
 
 }  // namespace hullopt::app

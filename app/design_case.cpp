@@ -8,11 +8,19 @@
 #include "seakeeping/motions/head_sea_ship_model.h"
 #include "seakeeping/motions/periodic_motion_solver.h"
 #include "seakeeping/motions/rao_checks.h"
+#include "seakeeping/motions/validity_range.h"
 
 namespace hullopt::app {
 namespace {
 
 sk::RaoSolverOptions SolverOptions(const DesignCase& d, double cs) { return io::RaoOptions(d.solver, d.name, cs); }
+
+// The 2D+t method's validity range (conventional strip theory has its own, low-Fn one: not flagged here).
+void AddValidityWarnings(const DesignCase& d, sk::RaoTable* t) {
+  if (d.solver.method != "time_domain_strip") return;
+  for (auto& w : sk::ValidityWarnings(d.speed_m_s, d.hydrostatics.L_m, d.water.g_m_s2, t->omega_rad_s))
+    t->warnings.push_back(std::move(w));
+}
 
 template <class F>
 auto Guard(const DesignCase& d, F&& f) -> decltype(f()) {
@@ -88,6 +96,7 @@ sk::RaoTable DesignRaosFromKernel(const DesignCase& d, const sk::StripKernel& ke
     t.warnings = d.input_warnings;
     for (const auto& w : sk::StripKernelWarnings(kernel)) t.warnings.push_back(w);
     for (const auto& w : sk::RaoResonanceWarnings(t)) t.warnings.push_back(w);
+    AddValidityWarnings(d, &t);
     return t;
   });
 }
@@ -99,8 +108,24 @@ sk::RaoTable ComputeDesignRaos(const DesignCase& d, const std::vector<double>& o
     sk::RaoTable t = sk::ComputeRaos(d.hull, d.mass, d.speed_m_s, d.water.rho_kg_m3, d.water.g_m_s2, omega_rad_s,
                                      SolverOptions(d, cs), sk::TransientGreenKernelBuilder(d.solver.Force()));
     t.warnings.insert(t.warnings.begin(), d.input_warnings.begin(), d.input_warnings.end());
+    AddValidityWarnings(d, &t);
     return t;
   });
+}
+
+std::vector<double> SeaFrequencies(const DesignCase& d) {
+  if (!d.has_frequencies) return EvaluationFrequencies();
+  try {
+    return sk::WaveFrequencies(d.solver.frequencies, d.speed_m_s, d.water.g_m_s2, d.hydrostatics.L_m);
+  } catch (const std::invalid_argument& e) {
+    throw io::InputError("design '" + d.name + "': solver.frequencies: " + e.what());
+  }
+}
+
+std::string SeaFrequencyAdvice(const DesignCase& d, const std::string& config_file) {
+  return d.has_frequencies ? "extend solver.frequencies in " + config_file
+                           : "add solver.frequencies to " + config_file +
+                                 " (without it the grid is omega 0.2..3 rad/s)";
 }
 
 std::vector<double> EvaluationFrequencies(int count) {

@@ -11,9 +11,9 @@
 #include "io/water_config.h"
 #include "io/yaml_map.h"
 #include "parametric_hull/hydrostatics.h"
-#include "seas/passenger_positions.h"
 #include "seakeeping/motions/rao_solver.h"
 #include "seakeeping/motions/rao_table.h"
+#include "seas/passenger_positions.h"
 
 namespace hullopt::app {
 
@@ -55,6 +55,13 @@ sk::StripKernel BuildDesignKernel(const DesignCase& design);
 /// RAOs from a prebuilt kernel (periodic path) for a given Cs.
 sk::RaoTable DesignRaosFromKernel(const DesignCase& design, const sk::StripKernel& kernel,
                                   const std::vector<double>& omega_rad_s, double cs);
+
+/// Wave frequencies for evaluating the design in seas: its config's solver.frequencies when given (λ/L, ω or
+/// ω_e at the design's speed and length), else EvaluationFrequencies(). io::InputError if they cannot be
+/// converted.
+std::vector<double> SeaFrequencies(const DesignCase& design);
+/// Advice for a warning that the range is too narrow, naming the key that sets it in config_file.
+std::string SeaFrequencyAdvice(const DesignCase& design, const std::string& config_file);
 
 /// Wave-frequency grid for sea-state evaluation: uniform in ω over [0.2, 3.0] rad/s (wavelengths 7 m to 1.5 km),
 /// which holds all but a negligible part of the energy of JONSWAP seas with Tz 4–12 s.

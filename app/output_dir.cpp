@@ -1,10 +1,16 @@
 #include "app/output_dir.h"
 
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
+#include <utility>
 
+#include "app/mpi_context.h"
 #include "hullopt/version.h"
+#include "io/atomic_file.h"
 #include "io/input_error.h"
+#include "io/utf8_text.h"
 
 namespace hullopt::app {
 
@@ -28,23 +34,47 @@ void CheckOutputDirCommand(const std::string& dir, const std::string& command) {
                          "' will not write over it: use another --out folder");
 }
 
+OutputFolderGuard::OutputFolderGuard(const std::string& dir, const std::string& command,
+                                     const std::string& config_file) {
+  for (const auto& [what, path] : {std::pair<const char*, const std::string&>{"--out", dir},
+                                   std::pair<const char*, const std::string&>{"config", config_file}}) {
+    if (!io::IsValidUtf8(path))
+      throw io::InputError(std::string("command line: the ") + what +
+                           " path is not valid UTF-8 (paths are written to JSON outputs); rename it");
+  }
+  std::string error, stale;
+  if (MpiRank() == 0) {
+    try {
+      lock_ = std::make_unique<io::OutputFolderLock>(dir, command, &stale);
+    } catch (const io::InputError& e) {
+      error = e.what();
+    }
+  }
+  error = MpiBroadcast(error);
+  if (!error.empty()) throw io::InputError(error);
+  if (!stale.empty())
+    std::fprintf(stderr, "hullopt: note: %s: took over the lock left by %s, which is no longer running\n",
+                 dir.c_str(), stale.c_str());
+}
+
+OutputFolderGuard::~OutputFolderGuard() = default;
+
 void PrepareOutputDir(const std::string& dir, const std::string& command, const std::string& config_file,
                       const YAML::Node& resolved) {
   CheckOutputDirCommand(dir, command);
   std::error_code ec;
   std::filesystem::create_directories(dir, ec);
   if (ec) throw io::InputError(dir + ": cannot create output folder: " + ec.message());
-  std::ofstream cfg(OutPath(dir, "config.resolved.yaml"));
-  if (!cfg) throw io::InputError(dir + ": cannot write config.resolved.yaml in the output folder");
   YAML::Emitter em;
+  std::ostringstream cfg;
   em << resolved;
   cfg << "# hullopt " << kVersion << " — " << command << " " << config_file << "\n"
       << "# The full input of this run with every default filled in; re-run with:\n"
       << "#   hullopt " << command << " config.resolved.yaml --out DIR\n"
       << "# Units: SI unless the key names its unit (_m, _t, _kn, _deg, _s, _pct_L).\n"
       << em.c_str() << "\n";
-  std::ofstream ver(OutPath(dir, "VERSION"));
-  ver << "hullopt " << kVersion << "\n";
+  io::WriteFileAtomically(OutPath(dir, "config.resolved.yaml"), cfg.str());
+  io::WriteFileAtomically(OutPath(dir, "VERSION"), std::string("hullopt ") + kVersion + "\n");
 }
 
 }  // namespace hullopt::app

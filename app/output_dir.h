@@ -2,7 +2,10 @@
 // Creating a run's output folder and writing what every run leaves behind: the resolved config and the version.
 #include <yaml-cpp/yaml.h>
 
+#include <memory>
 #include <string>
+
+#include "io/output_lock.h"
 
 namespace hullopt::app {
 
@@ -15,6 +18,19 @@ void PrepareOutputDir(const std::string& dir, const std::string& command, const 
 /// config.resolved.yaml), naming that command; a folder of the same command (a re-run or a resume) passes.
 /// Called by PrepareOutputDir, and by the campaigns before they open their journal.
 void CheckOutputDirCommand(const std::string& dir, const std::string& command);
+
+/// The output folder's lock for the whole run of a command (io::OutputFolderLock): taken by MPI rank 0 only
+/// (the only writer); a refusal is shared so that every rank stops with the same error. Prints a note on stderr
+/// when it takes over the stale lock of a run that was killed. The folder and config paths are checked to be
+/// UTF-8 first (they appear in JSON outputs and messages).
+class OutputFolderGuard {
+ public:
+  OutputFolderGuard(const std::string& dir, const std::string& command, const std::string& config_file);
+  ~OutputFolderGuard();
+
+ private:
+  std::unique_ptr<io::OutputFolderLock> lock_;
+};
 
 /// Path join: dir + "/" + name.
 std::string OutPath(const std::string& dir, const std::string& name);

@@ -33,6 +33,16 @@ opt::AnalyticObjectiveOptions Sphere() {
   o.dimension = 4;
   return o;
 }
+// A typical MSI campaign row: 4 variables, 2 seas, 1 constrained quantity.
+io::HistoryLayout RowLayout() { return {{"x1", "x2", "x3", "x4"}, {"msi_sea1_pct", "msi_sea2_pct"}, {"L_m"}}; }
+opt::EvaluationRecord RowRecord() {
+  opt::EvaluationRecord rec;
+  rec.x = {0.1, 0.2, 0.3, 0.4};
+  rec.result.objective = 1.0 / 3.0;
+  rec.result.sea_values = {2.0 / 3.0, 5.0 / 7.0};
+  rec.feasible = true;
+  return rec;
+}
 }  // namespace
 
 // Driver overhead per evaluation (NLopt algorithm work included), no I/O.
@@ -54,12 +64,8 @@ BENCHMARK_CAPTURE(BM_NloptDriverPerEvaluation, GN_ISRES, "GN_ISRES")->Unit(bench
 
 // Formatting one history row (%.17g) and appending it with fsync: the price of resumability per evaluation.
 static void BM_HistoryAppendWithFsync(benchmark::State& state) {
-  io::HistoryLayout layout{{"x1", "x2", "x3", "x4"}, {"msi_sea1_pct", "msi_sea2_pct"}, {"L_m"}};
-  opt::EvaluationRecord rec;
-  rec.x = {0.1, 0.2, 0.3, 0.4};
-  rec.result.objective = 1.0 / 3.0;
-  rec.result.sea_values = {2.0 / 3.0, 5.0 / 7.0};
-  rec.feasible = true;
+  const io::HistoryLayout layout = RowLayout();
+  const opt::EvaluationRecord rec = RowRecord();
   const std::string path = "/tmp/hullopt_bench_history.csv";
   io::HistoryAppender w(path, layout, 0);
   long n = 0;
@@ -89,6 +95,21 @@ static void BM_ReplayPerEvaluation(benchmark::State& state) {
   state.SetItemsProcessed(evals);
 }
 BENCHMARK(BM_ReplayPerEvaluation)->Unit(benchmark::kMillisecond);
+
+// Reading a 1000-row log back on resume (parsing and checking each row), per row.
+static void BM_ReadHistoryPerRow(benchmark::State& state) {
+  const io::HistoryLayout layout = RowLayout();
+  const opt::EvaluationRecord rec = RowRecord();
+  std::string text = layout.Header() + "\n";
+  for (long i = 0; i < 1000; ++i) text += io::FormatHistoryRow(i, rec, {75.0}, layout);
+  long rows = 0;
+  for (auto _ : state) {
+    const io::HistoryFile f = io::ParseHistory(text, "bench.csv", layout);
+    rows += static_cast<long>(f.rows.size());
+  }
+  state.SetItemsProcessed(rows);
+}
+BENCHMARK(BM_ReadHistoryPerRow)->Unit(benchmark::kMillisecond);
 
 // Ordered parallel evaluation of 200 Sobol samples of a 2 ms objective: threads = 1, 2.
 static void BM_ExploreOrdered2msObjective(benchmark::State& state) {

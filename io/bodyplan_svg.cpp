@@ -5,6 +5,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "io/atomic_file.h"
 #include "io/input_error.h"
 
 namespace hullopt::io {
@@ -87,9 +88,7 @@ void WriteBodyPlanSvg(const std::string& path, const hull::HullForm& hull, const
     }
   }
   svg << "</svg>\n";
-  std::ofstream out(path);
-  if (!out) throw InputError(path + ": cannot write body plan");
-  out << svg.str();
+  WriteFileAtomically(path, svg.str());
 }
 
 }  // namespace hullopt::io

@@ -1,15 +1,11 @@
 #include "io/campaign_outputs.h"
 
-#include <fcntl.h>
-#include <unistd.h>
-
-#include <cerrno>
 #include <cstdio>
-#include <cstring>
 #include <fstream>
 #include <sstream>
 
 #include "io/finite_json.h"
+#include "io/atomic_file.h"
 #include "io/input_error.h"
 
 namespace hullopt::io {
@@ -27,9 +23,7 @@ std::string TextHash(const std::string& text) {
 
 void WriteJson(const std::string& path, const nlohmann::json& json) {
   RequireFiniteJson(json, path);
-  std::ofstream out(path);
-  if (!out) throw InputError(path + ": cannot write");
-  out << json.dump(2) << "\n";
+  WriteFileAtomically(path, json.dump(2) + "\n");
 }
 
 void WriteBestYaml(const std::string& path, const YAML::Node& base_config, const std::string& block,
@@ -46,21 +40,18 @@ void WriteBestYaml(const std::string& path, const YAML::Node& base_config, const
   YAML::Emitter em;
   em.SetDoublePrecision(17);
   em << cfg;
-  std::ofstream out(path);
-  if (!out) throw InputError(path + ": cannot write");
-  out << "# " << comment << "\n" << em.c_str() << "\n";
+  WriteFileAtomically(path, "# " + comment + "\n" + em.c_str() + "\n");
 }
 
 void WriteSensitivityCsv(const std::string& path, const std::vector<std::string>& names,
                          const opt::SensitivityResult& s) {
-  std::ofstream out(path);
-  if (!out) throw InputError(path + ": cannot write");
-  out << "variable,src,first_order_sobol\n";
+  std::string text = "variable,src,first_order_sobol\n";
   char buf[96];
   for (std::size_t i = 0; i < names.size(); ++i) {
     std::snprintf(buf, sizeof buf, ",%.9g,%.9g\n", s.src[i], s.first_order[i]);
-    out << names[i] << buf;
+    text += names[i] + buf;
   }
+  WriteFileAtomically(path, text);
 }
 
 std::string ReadTextFile(const std::string& path) {
@@ -69,15 +60,6 @@ std::string ReadTextFile(const std::string& path) {
   std::stringstream ss;
   ss << in.rdbuf();
   return ss.str();
-}
-
-void WriteTextFileDurably(const std::string& path, const std::string& text) {
-  const int fd = ::open(path.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-  if (fd < 0) throw InputError(path + ": cannot write: " + std::strerror(errno));
-  const bool ok =
-      ::write(fd, text.data(), text.size()) == static_cast<ssize_t>(text.size()) && ::fsync(fd) == 0;
-  ::close(fd);
-  if (!ok) throw InputError(path + ": write failed: " + std::strerror(errno));
 }
 
 }  // namespace hullopt::io

@@ -30,7 +30,5 @@ void WriteSensitivityCsv(const std::string& path, const std::vector<std::string>
 
 /// Reads a small text file entirely; empty string if it does not exist.
 std::string ReadTextFile(const std::string& path);
-/// Writes a small text file and fsyncs it. Throws InputError on failure.
-void WriteTextFileDurably(const std::string& path, const std::string& text);
 
 }  // namespace hullopt::io

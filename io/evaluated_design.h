@@ -3,9 +3,9 @@
 #include <map>
 #include <string>
 
+#include "seakeeping/motions/rao_table.h"
 #include "seas/design_evaluation.h"
 #include "seas/passenger_positions.h"
-#include "seakeeping/motions/rao_table.h"
 
 namespace hullopt::io {
 
@@ -16,6 +16,9 @@ struct EvaluatedDesign {
   sk::RaoTable rao;
   sk::HullExtent hull;
   sk::DesignEvaluation evaluation;  ///< sk::EvaluateDesign(rao, hull, seas, ...)
+  /// How to widen the RAO frequency range, for warnings: names the key that sets it (solver.frequencies of the
+  /// design config) or the RAO file to recompute.
+  std::string frequency_advice;
 };
 
 }  // namespace hullopt::io

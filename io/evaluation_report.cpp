@@ -4,9 +4,11 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 
 #include "hullopt/version.h"
 #include "io/finite_json.h"
+#include "io/atomic_file.h"
 #include "io/input_error.h"
 #include "io/seakeeping_plots.h"
 #include "io/svg_plot.h"
@@ -49,8 +51,7 @@ nlohmann::json PositionJson(const sk::PositionResult& r, double hs) {
 }  // namespace
 
 void WriteMsiCsv(const std::string& path, const std::vector<EvaluatedDesign>& designs) {
-  std::ofstream f(path);
-  if (!f) throw InputError(path + ": cannot write msi.csv");
+  std::ostringstream f;
   f << "design,Hs_m,Tz_s,position,x_from_cg_m,rms_accel_g,msi_pct\n";
   for (const auto& d : designs) {
     for (const auto& s : d.evaluation.seas) {
@@ -66,7 +67,7 @@ void WriteMsiCsv(const std::string& path, const std::vector<EvaluatedDesign>& de
       row(s.mean);
     }
   }
-  if (!f) throw InputError(path + ": error while writing msi.csv");
+  WriteFileAtomically(path, f.str());
 }
 
 std::vector<std::string> EvaluationWarnings(const std::vector<EvaluatedDesign>& designs,
@@ -79,10 +80,10 @@ std::vector<std::string> EvaluationWarnings(const std::vector<EvaluatedDesign>& 
         char buf[320];
         std::snprintf(buf, sizeof buf,
                       "design '%s', sea Hs %g m Tz %.3g s: the RAO table (omega %.3g..%.3g rad/s) leaves out "
-                      "%.1f%% of the wave energy (threshold %.1f%%); extend the RAO frequency range",
+                      "%.1f%% of the wave energy (threshold %.1f%%); ",
                       d.name.c_str(), s.sea.Hs_m, s.Tz_s, d.rao.omega_rad_s.front(), d.rao.omega_rad_s.back(),
                       100.0 * s.truncated_wave_energy_fraction, 100.0 * report.truncation_warning_fraction);
-        w.push_back(buf);
+        w.push_back(buf + (d.frequency_advice.empty() ? std::string("extend the RAO frequency range") : d.frequency_advice));
       }
     }
   }
@@ -154,11 +155,9 @@ std::vector<std::string> WriteEvaluationOutputs(const std::string& dir,
   const auto warnings = EvaluationWarnings(designs, report);
   {
     const std::string path = Join(dir, "summary.json");
-    RequireFiniteJson(EvaluationSummaryJson(designs, options, warnings), path);
-    std::ofstream f(path);
-    if (!f) throw InputError(path + ": cannot write summary.json");
-    f << EvaluationSummaryJson(designs, options, warnings).dump(2) << "\n";
-    if (!f) throw InputError(path + ": error while writing summary.json");
+    const auto summary = EvaluationSummaryJson(designs, options, warnings);
+    RequireFiniteJson(summary, path);
+    WriteFileAtomically(path, summary.dump(2) + "\n");
     files.push_back("summary.json");
   }
   if (!report.plots) return files;

@@ -101,21 +101,58 @@ HistoryRow ParseHistoryRow(const std::string& line, const HistoryLayout& layout,
   row.evaluation = integer(f[0]);
   std::size_t c = 1;
   opt::EvaluationRecord& r = row.record;
-  for (std::size_t i = 0; i < nv; ++i) r.x.push_back(num(f[c++]));
+  // Column names for messages, in column order.
+  auto name_of = [&](std::size_t col) -> std::string {
+    if (col == 0) return "evaluation";
+    if (col <= nv) return layout.variables[col - 1];
+    if (col == nv + 1) return "objective";
+    if (col == nv + 2) return "feasible";
+    if (col <= nv + 2 + ns) return layout.seas[col - nv - 3];
+    if (col <= nv + 2 + ns + nq) return layout.quantities[col - nv - 3 - ns];
+    const char* tail[] = {"wall_time_s", "run", "step", "message"};
+    return tail[col - (nv + 3 + ns + nq)];
+  };
+  auto column = [&](std::size_t col, const std::string& rule) {
+    bad("column '" + name_of(col) + "' = '" + f[col] + "': " + rule);
+  };
+  for (std::size_t i = 0; i < nv; ++i, ++c) {
+    r.x.push_back(num(f[c]));
+    if (!std::isfinite(r.x.back())) column(c, "a design variable must be finite");
+  }
+  const std::size_t objective_col = c;
   r.result.objective = num(f[c++]);
+  if (f[c] != "0" && f[c] != "1") column(c, "must be 0 or 1");
+  const std::size_t feasible_col = c;
   r.feasible = f[c++] == "1";
+  const std::size_t results_begin = c;
   for (std::size_t i = 0; i < ns; ++i) r.result.sea_values.push_back(num(f[c++]));
   for (std::size_t i = 0; i < nq; ++i) row.reported.push_back(num(f[c++]));
-  r.wall_time_s = num(f[c++]);
-  r.run = static_cast<int>(integer(f[c++]));
-  r.step = static_cast<int>(integer(f[c++]));
+  const std::size_t results_end = c;
+  r.wall_time_s = num(f[c]);
+  if (!(std::isfinite(r.wall_time_s) && r.wall_time_s >= 0)) column(c, "must be a finite time >= 0");
+  ++c;
+  r.run = static_cast<int>(integer(f[c]));
+  if (r.run < -1) column(c, "must be >= -1");
+  ++c;
+  r.step = static_cast<int>(integer(f[c]));
+  if (r.step < 0) column(c, "must be >= 0");
+  ++c;
   const std::string& message = f[c++];
   if (message.compare(0, kWarningPrefix.size(), kWarningPrefix) == 0)
     r.result.warning = message.substr(kWarningPrefix.size());
   else
     r.result.error = message;
   r.result.produced = r.result.error.empty();
-  if (!r.result.produced) {
+  // An evaluated design has finite numbers throughout; a refused one (its reason in `message`) has none.
+  if (r.result.produced) {
+    if (!std::isfinite(r.result.objective)) column(objective_col, "an evaluated design's objective must be finite");
+    for (std::size_t k = results_begin; k < results_end; ++k)
+      if (!std::isfinite(num(f[k]))) column(k, "an evaluated design's values must be finite");
+  } else {
+    if (f[objective_col] != "nan") column(objective_col, "a refused design (message set) has objective nan");
+    if (r.feasible) column(feasible_col, "a refused design is infeasible (0)");
+    for (std::size_t k = results_begin; k < results_end; ++k)
+      if (f[k] != "nan") column(k, "a refused design has no values (nan)");
     r.result.sea_values.clear();
     row.reported.clear();
   }

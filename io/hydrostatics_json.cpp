@@ -5,6 +5,7 @@
 #include <nlohmann/json.hpp>
 
 #include "io/finite_json.h"
+#include "io/atomic_file.h"
 #include "io/input_error.h"
 
 namespace hullopt::io {
@@ -65,9 +66,7 @@ void WriteHydrostaticsJson(const std::string& path, const hull::HullForm& hull, 
   j["heave_stiffness_N_per_m"] = r.rho_kg_m3 * r.g_m_s2 * h.awp_m2;
   if (!r.warnings.empty()) j["warnings"] = r.warnings;
   RequireFiniteJson(j, path);
-  std::ofstream out(path);
-  if (!out) throw InputError(path + ": cannot write hydrostatics file");
-  out << j.dump(2) << "\n";
+  WriteFileAtomically(path, j.dump(2) + "\n");
 }
 
 }  // namespace hullopt::io

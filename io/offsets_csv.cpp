@@ -8,6 +8,7 @@
 #include <sstream>
 #include <vector>
 
+#include "io/atomic_file.h"
 #include "io/csv_fields.h"
 #include "io/input_error.h"
 #include "io/input_limits.h"
@@ -119,8 +120,7 @@ hull::Demihull ReadOffsetsCsv(const std::string& path, double draught_m) {
 }
 
 void WriteOffsetsCsv(const std::string& path, const hull::HullForm& hull) {
-  std::ofstream out(path);
-  if (!out) throw InputError(path + ": cannot write offsets file");
+  std::ostringstream out;
   out << "x_m,y_m,z_m,body,y_centre_m\n" << std::setprecision(9);
   for (size_t b = 0; b < hull.bodies.size(); ++b) {
     const auto& body = hull.bodies[b];
@@ -129,7 +129,7 @@ void WriteOffsetsCsv(const std::string& path, const hull::HullForm& hull) {
         out << s.x_m << ',' << s.y_m[k] << ',' << s.z_m[k] << ',' << (body.role.empty() ? "body" : body.role)
             << ',' << body.y_centre_m << '\n';
   }
-  if (!out) throw InputError(path + ": error while writing offsets file");
+  WriteFileAtomically(path, out.str());
 }
 
 }  // namespace hullopt::io

@@ -6,6 +6,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "io/atomic_file.h"
 #include "io/input_error.h"
 
 namespace hullopt::io {
@@ -54,10 +55,7 @@ std::string FormatRaoCsv(const sk::RaoTable& t, double length_m, const std::vect
 void WriteRaoCsv(const std::string& path, const sk::RaoTable& table, double length_m,
                  const std::vector<std::string>& notes) {
   const std::string text = FormatRaoCsv(table, length_m, notes);
-  std::ofstream out(path);
-  if (!out) throw InputError(path + ": cannot write rao.csv");
-  out << text;
-  if (!out) throw InputError(path + ": error while writing rao.csv");
+  WriteFileAtomically(path, text);
 }
 
 }  // namespace hullopt::io

@@ -9,6 +9,7 @@
 #include <map>
 #include <sstream>
 
+#include "io/atomic_file.h"
 #include "io/input_error.h"
 #include "io/input_limits.h"
 
@@ -238,8 +239,7 @@ hull::Demihull SliceStl(const StlMesh& mesh, int stations, double draught_m, con
 }
 
 void WriteBinaryStl(const std::string& path, const StlMesh& mesh) {
-  std::ofstream out(path, std::ios::binary);
-  if (!out) throw InputError(path + ": cannot write STL file");
+  std::ostringstream out(std::ios::binary);
   char header[80] = "hullopt binary STL";
   out.write(header, 80);
   const uint32_t n = uint32_t(mesh.triangles.size());
@@ -255,6 +255,7 @@ void WriteBinaryStl(const std::string& path, const StlMesh& mesh) {
     const uint16_t attr = 0;
     out.write(reinterpret_cast<const char*>(&attr), 2);
   }
+  WriteFileAtomically(path, out.str());
 }
 
 }  // namespace hullopt::io

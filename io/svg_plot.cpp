@@ -7,6 +7,7 @@
 #include <limits>
 #include <sstream>
 
+#include "io/atomic_file.h"
 #include "io/input_error.h"
 
 namespace hullopt::io {
@@ -559,10 +560,7 @@ std::string RenderSvg(const PlotFigure& figure) {
 }
 
 void WriteSvg(const PlotFigure& figure, const std::string& path) {
-  std::ofstream f(path);
-  if (!f) throw InputError(path + ": cannot write plot file");
-  f << RenderSvg(figure);
-  if (!f) throw InputError(path + ": error while writing plot file");
+  WriteFileAtomically(path, RenderSvg(figure));
 }
 
 }  // namespace hullopt::io

@@ -30,6 +30,10 @@ std::vector<std::string> Split(const std::string& line) {
   return out;
 }
 
+// Largest plausible non-dimensional RAO magnitude: far above any measured peak (the paper's and the Delft 372
+// data peak below 3), far below values whose squares overflow in the fit's residuals.
+constexpr double kMaxTankRao = 100.0;
+
 std::string Num(double v) {
   char buf[32];
   std::snprintf(buf, sizeof buf, "%g", v);
@@ -124,6 +128,11 @@ std::vector<opt::TankRaoPoint> ReadTankRaoCsv(const std::string& file) {
       if (v < 0) {
         throw InputError(where + ": column '" + name + "' = " + Num(v) +
                          ": an RAO magnitude must be >= 0 (a sign belongs in the phase column)");
+      }
+      if (v > kMaxTankRao) {
+        throw InputError(where + ": column '" + name + "' = " + Num(v) + ": must be <= " + Num(kMaxTankRao) +
+                         " (non-dimensional RAOs |x3|/A and |x5|/(kA) are of order 1: measured peaks are below "
+                         "3; a larger value is a unit or column error)");
       }
     }
     if (col.count("heave_phase_deg")) p.has_heave_phase = number("heave_phase_deg", &p.heave_phase_deg, true);

@@ -5,6 +5,8 @@
 #include <fstream>
 #include <sstream>
 
+#include "io/utf8_text.h"
+
 namespace hullopt::io {
 namespace {
 std::string Line(const YAML::Node& n) {
@@ -83,6 +85,7 @@ YamlMap YamlMap::LoadFile(const std::string& file) {
                      std::to_string(kMaxConfigBytes) + " bytes)");
   std::ostringstream text;
   text << in.rdbuf();
+  RequireUtf8(text.str(), file);
   std::vector<YAML::Node> docs;
   try {
     docs = YAML::LoadAll(text.str());

@@ -62,6 +62,10 @@ AnalyticEvaluator::AnalyticEvaluator(const AnalyticObjectiveOptions& options) : 
   if (!options_.IsValid(&error)) throw std::invalid_argument(error);
 }
 
+double AnalyticEvaluator::ObjectiveImplied(const std::vector<double>& x, const std::vector<double>&) const {
+  return AnalyticFunction(options_.function, x);
+}
+
 EvalResult AnalyticEvaluator::Evaluate(const std::vector<double>& x) {
   if (options_.eval_delay_ms > 0.0) {
     std::this_thread::sleep_for(std::chrono::duration<double, std::milli>(options_.eval_delay_ms));

@@ -41,6 +41,8 @@ class AnalyticEvaluator : public Evaluator {
   /// that the "unknown variable" check of campaigns can be exercised without the hull generator.
   std::vector<std::string> VariableNames() const override;
   std::string ObjectiveLabel() const override { return options_.function + " (analytic test objective)"; }
+  /// The function at x (no delay, no refusal).
+  double ObjectiveImplied(const std::vector<double>& x, const std::vector<double>& sea_values) const override;
 
  private:
   AnalyticObjectiveOptions options_;

@@ -394,6 +394,9 @@ CsCalibrationResult CalibrateCs(const CsRaoModel& model, const std::vector<Calib
     throw std::domain_error("Cs calibration: Ceres found no usable solution: " + summary.message +
                             model_errors);
   }
+  if (!std::isfinite(summary.initial_cost) || !std::isfinite(summary.final_cost))
+    throw std::domain_error("Cs calibration: the residuals overflow (cost " + Fmt(summary.final_cost) +
+                            "): a measured or computed RAO is too large to fit");
   if (!res.converged) res.warnings.push_back("Ceres did not report convergence: " + summary.message);
 
   res.num_parameters = num_blocks * block_size;
@@ -434,6 +437,14 @@ CsCalibrationResult CalibrateCs(const CsRaoModel& model, const std::vector<Calib
   }
   for (int i = 0; i < p; ++i)
     res.parameter_std_errors.push_back(std::sqrt(std::max(0.0, res.covariance[i][i])));
+  // A fit whose uncertainty is unknown has not converged in any useful sense, whatever Ceres says.
+  for (int i = 0; i < p; ++i) {
+    if (std::isfinite(res.parameters[i]) && std::isfinite(res.parameter_std_errors[i])) continue;
+    res.converged = false;
+    res.warnings.push_back("parameter " + res.parameter_names[i] + " = " + Fmt(res.parameters[i]) +
+                           " has a non-finite standard error (" + Fmt(res.parameter_std_errors[i]) +
+                           "): the fit is not converged; check the data for outliers");
+  }
 
   // Per-case Cs, before/after residuals and peaks.
   double ss_before = 0, ss_after = 0;
@@ -449,6 +460,10 @@ CsCalibrationResult CalibrateCs(const CsRaoModel& model, const std::vector<Calib
       var += 2 * q * res.covariance[b0][b0 + 1] + q * q * res.covariance[b0 + 1][b0 + 1];
     }
     res.case_Cs_std_error.push_back(std::sqrt(std::max(0.0, var)));
+    if (!std::isfinite(res.case_Cs_std_error.back()) && res.converged) {
+      res.converged = false;
+      res.warnings.push_back("Cs of case '" + cc.label + "' has a non-finite standard error: the fit is not converged");
+    }
     if (block_size == 1 && Cs < kAtBound) {
       res.warnings.push_back("Cs of case '" + cc.label +
                              "' is at its lower bound 0: the standard error ignores the bound");

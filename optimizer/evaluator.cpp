@@ -35,6 +35,19 @@ EvalResult EvaluateSafely(Evaluator& evaluator, const std::vector<double>& x) {
                            std::to_string(evaluator.SeaNames().size()) + " and " +
                            std::to_string(evaluator.QuantityNames().size()));
   }
+  // A non-finite value must never reach the log (or a constraint): such a design counts as not produced.
+  auto refuse_non_finite = [&](const std::vector<double>& v, const std::vector<std::string>& names) {
+    for (std::size_t i = 0; i < v.size(); ++i) {
+      if (std::isfinite(v[i])) continue;
+      r = EvalResult{};
+      r.produced = false;
+      r.error = names[i] + " is not a finite number";
+      return true;
+    }
+    return false;
+  };
+  if (refuse_non_finite(r.sea_values, evaluator.SeaNames())) return r;
+  if (refuse_non_finite(r.quantities, evaluator.QuantityNames())) return r;
   return r;
 }
 

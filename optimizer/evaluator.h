@@ -3,6 +3,7 @@
 // quantities out. The campaign machinery (NLopt driver, sampling, resume, parallel runs) only sees this
 // interface; the MSI evaluator (hull generator + motions + seas) and the analytic test objectives implement
 // it.
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -45,6 +46,15 @@ class Evaluator {
   /// Names the free design variables may take (e.g. the generator's variables); empty = any name.
   virtual std::vector<std::string> VariableNames() const { return {}; }
   virtual bool IsThreadSafe() const { return true; }
+  /// The objective a produced result of design x must have, computed from x and the result's per-sea values
+  /// without the expensive part of an evaluation (the MSI objective is the weighted mean of the per-sea
+  /// values; an analytic objective is its formula); NaN when it cannot be computed that way. Used to check
+  /// every row of a campaign log on resume.
+  virtual double ObjectiveImplied(const std::vector<double>& x, const std::vector<double>& sea_values) const {
+    (void)x;
+    (void)sea_values;
+    return std::numeric_limits<double>::quiet_NaN();
+  }
 };
 
 /// Calls evaluator.Evaluate(x) and converts a std::domain_error (generator refusal) into an EvalResult with

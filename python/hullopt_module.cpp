@@ -330,7 +330,7 @@ PYBIND11_MODULE(_hullopt, m) {
           "raos",
           [](const app::DesignCase& d, const py::object& omega) {
             const std::vector<double> w =
-                omega.is_none() ? app::EvaluationFrequencies() : omega.cast<std::vector<double>>();
+                omega.is_none() ? app::SeaFrequencies(d) : omega.cast<std::vector<double>>();
             sk::RaoTable t;
             {
               py::gil_scoped_release release;
@@ -339,7 +339,8 @@ PYBIND11_MODULE(_hullopt, m) {
             return RaoDict(t);
           },
           py::arg("omega_rad_s") = py::none(),
-          "RAOs (as compute_raos) at omega_rad_s [rad/s], by default the evaluation grid.");
+          "RAOs (as compute_raos) at omega_rad_s [rad/s], by default the grid of `hullopt evaluate`: the "
+          "config's solver.frequencies, else the evaluation grid.");
 
   m.def(
       "load_design",

@@ -9,22 +9,9 @@ work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 fail() { echo "FAIL: $*" >&2; exit 1; }
 
-write_config() {  # $1 file, $2 eval_delay_ms
-  cat > "$1" <<YAML
-# hullopt optimize
-optimize:
-  algorithm: LN_COBYLA
-  max_evaluations: 120
-  starts: 2
-  seed: 3
-  variables: { x1: [-2, 2], x2: [-2, 2] }
-  start: { x1: -0.5, x2: 0.5 }
-  constraints: { radius_sq_max: 1.0 }
-  objective: { analytic: rosenbrock, eval_delay_ms: $2 }
-YAML
-}
-write_config "$work/slow.yaml" 15
-write_config "$work/fast.yaml" 0
+source "$(dirname "$0")/../support/cli_campaign.sh"
+write_rosenbrock_campaign "$work/slow.yaml" 15 120
+write_rosenbrock_campaign "$work/fast.yaml" 0 120
 
 # Reference: uninterrupted (the delay does not change any value, only the time).
 "$HULLOPT" optimize "$work/fast.yaml" --out "$work/ref" --quiet || fail "reference run failed"
@@ -54,7 +41,6 @@ grep -q "resuming: $rows_before evaluations" "$work/resume.log" || { cat "$work/
 grep -q "incomplete last row" "$work/resume.log" || fail "truncated last row not reported"
 
 # Compare all columns except wall_time_s.
-strip() { awk -F, 'NR==1{for(i=1;i<=NF;i++) if($i=="wall_time_s") w=i} {s=""; for(i=1;i<=NF;i++) if(i!=w) s=s (s==""?"":",") $i; print s}' "$1"; }
 strip "$work/ref/history.csv" > "$work/ref.rows"
 strip "$work/run/history.csv" > "$work/run.rows"
 diff -q "$work/ref.rows" "$work/run.rows" > /dev/null || { diff "$work/ref.rows" "$work/run.rows" | head >&2; fail "histories differ"; }
