@@ -97,6 +97,17 @@ sk::RaoTable ComputeDesignRaos(const DesignCase& d, const std::vector<double>& o
   });
 }
 
+sk::CoefficientTable ComputeDesignCoefficients(const DesignCase& d, const std::vector<double>& omega_rad_s) {
+  try {
+    return sk::ComputeCoefficients(d.hull, d.mass, d.speed_m_s, d.water.rho_kg_m3, d.water.g_m_s2, omega_rad_s,
+                                   SolverOptions(d, d.solver.cs), sk::TransientGreenKernelBuilder(d.solver.Force()));
+  } catch (const std::domain_error& e) {
+    throw io::InputError("design '" + d.name + "': cannot compute coefficients: " + e.what());
+  } catch (const std::invalid_argument& e) {
+    throw io::InputError("design '" + d.name + "': cannot compute coefficients: " + e.what());
+  }
+}
+
 std::vector<double> EvaluationFrequencies(int count) {
   std::vector<double> w(count);
   for (int i = 0; i < count; ++i) w[i] = 0.2 + (3.0 - 0.2) * i / (count - 1);

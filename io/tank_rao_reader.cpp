@@ -6,29 +6,11 @@
 #include <fstream>
 #include <map>
 
+#include "io/csv_fields.h"
 #include "io/input_error.h"
 
 namespace hullopt::io {
 namespace {
-
-std::string Trim(const std::string& s) {
-  const auto b = s.find_first_not_of(" \t\r");
-  if (b == std::string::npos) return "";
-  const auto e = s.find_last_not_of(" \t\r");
-  return s.substr(b, e - b + 1);
-}
-
-std::vector<std::string> Split(const std::string& line) {
-  std::vector<std::string> out;
-  std::string::size_type start = 0;
-  while (true) {
-    const auto comma = line.find(',', start);
-    out.push_back(Trim(line.substr(start, comma == std::string::npos ? std::string::npos : comma - start)));
-    if (comma == std::string::npos) break;
-    start = comma + 1;
-  }
-  return out;
-}
 
 std::string Num(double v) {
   char buf[32];
@@ -48,9 +30,9 @@ std::vector<opt::TankRaoPoint> ReadTankRaoCsv(const std::string& file) {
   std::vector<std::string> header;
   while (std::getline(in, line)) {
     ++lineno;
-    const std::string t = Trim(line);
+    const std::string t = TrimField(line);
     if (t.empty() || t[0] == '#') continue;
-    header = Split(t);
+    header = SplitCsvLine(t);
     break;
   }
   if (header.empty()) throw InputError(file + ": empty file (no header line; " + contract + ")");
@@ -78,9 +60,9 @@ std::vector<opt::TankRaoPoint> ReadTankRaoCsv(const std::string& file) {
   std::vector<opt::TankRaoPoint> points;
   while (std::getline(in, line)) {
     ++lineno;
-    const std::string t = Trim(line);
+    const std::string t = TrimField(line);
     if (t.empty() || t[0] == '#') continue;
-    const std::vector<std::string> f = Split(t);
+    const std::vector<std::string> f = SplitCsvLine(t);
     const std::string where = file + ":" + std::to_string(lineno);
     if (f.size() != header.size()) {
       throw InputError(where + ": " + std::to_string(f.size()) + " fields, the header has " +
