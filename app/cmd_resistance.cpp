@@ -99,7 +99,10 @@ void AddResistanceCommand(CLI::App& app) {
   auto out = std::make_shared<std::string>();
   cmd->add_option("config", *config, "YAML config (hull, water, resistance, speed)")->required();
   cmd->add_option("--out", *out, "output folder")->required();
-  cmd->callback([config, out] { RunResistance(*config, *out); });
+  cmd->callback([config, out] {
+    const OutputFolderGuard lock(*out, "resistance", *config);
+    RunResistance(*config, *out);
+  });
 }
 
 }  // namespace hullopt::app

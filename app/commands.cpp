@@ -6,6 +6,7 @@ void AddAllCommands(CLI::App& app) {
   AddHullCommand(app);
   AddSectionCommand(app);
   AddRaoCommand(app);
+  AddCoefficientsCommand(app);
   AddEvaluateCommand(app);
   AddOptimizeCommand(app);
   AddExploreCommand(app);

@@ -12,6 +12,7 @@ void AddOptimizeCommand(CLI::App& app);
 void AddExploreCommand(CLI::App& app);
 void AddCalibrateCommand(CLI::App& app);
 void AddResistanceCommand(CLI::App& app);
+void AddCoefficientsCommand(CLI::App& app);
 /// All of the above, in the order of `hullopt --help` (the executable and the Python module's run()).
 void AddAllCommands(CLI::App& app);
 }  // namespace hullopt::app

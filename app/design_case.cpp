@@ -128,6 +128,17 @@ std::string SeaFrequencyAdvice(const DesignCase& d, const std::string& config_fi
                                  " (without it the grid is omega 0.2..3 rad/s)";
 }
 
+sk::CoefficientTable ComputeDesignCoefficients(const DesignCase& d, const std::vector<double>& omega_rad_s) {
+  try {
+    return sk::ComputeCoefficients(d.hull, d.mass, d.speed_m_s, d.water.rho_kg_m3, d.water.g_m_s2, omega_rad_s,
+                                   SolverOptions(d, d.solver.cs), sk::TransientGreenKernelBuilder(d.solver.Force()));
+  } catch (const std::domain_error& e) {
+    throw io::InputError("design '" + d.name + "': cannot compute coefficients: " + e.what());
+  } catch (const std::invalid_argument& e) {
+    throw io::InputError("design '" + d.name + "': cannot compute coefficients: " + e.what());
+  }
+}
+
 std::vector<double> EvaluationFrequencies(int count) {
   std::vector<double> w(count);
   for (int i = 0; i < count; ++i) w[i] = 0.2 + (3.0 - 0.2) * i / (count - 1);

@@ -49,6 +49,11 @@ DesignCase LoadDesignCase(io::YamlMap& root, const std::string& config_file, con
 sk::RaoTable ComputeDesignRaos(const DesignCase& design, const std::vector<double>& omega_rad_s,
                                double cs_override = -1.0);
 
+/// The heave–pitch coefficients of the design at wave frequencies omega_rad_s by the config's solver.method
+/// (sk::ComputeCoefficients: the same strips as ComputeDesignRaos). Throws io::InputError naming the design
+/// for path: time_marching, a frequency outside the kernel's range or a hull that cannot be solved.
+sk::CoefficientTable ComputeDesignCoefficients(const DesignCase& design, const std::vector<double>& omega_rad_s);
+
 /// The strip kernel of the design (frequency- and Cs-independent; compute once, reuse for many Cs). Time-domain
 /// strip method only: io::InputError for solver.method strip_theory_stf.
 sk::StripKernel BuildDesignKernel(const DesignCase& design);

@@ -3,27 +3,51 @@
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
-#include <sstream>
 
 #include "io/input_error.h"
 
 namespace hullopt::io {
 
-std::vector<std::string> SplitCsvTrimmed(const std::string& line) {
-  std::vector<std::string> out;
-  std::string cell;
-  std::istringstream in(line);
-  while (std::getline(in, cell, ',')) {
-    const size_t a = cell.find_first_not_of(" \t\r"), b = cell.find_last_not_of(" \t\r");
-    out.push_back(a == std::string::npos ? "" : cell.substr(a, b - a + 1));
+std::string TrimField(const std::string& s) {
+  const auto b = s.find_first_not_of(" \t\r");
+  if (b == std::string::npos) return "";
+  const auto e = s.find_last_not_of(" \t\r");
+  return s.substr(b, e - b + 1);
+}
+
+std::vector<std::string> SplitCsvLine(const std::string& line) {
+  std::vector<std::string> out(1);
+  bool quoted = false;
+  for (std::size_t i = 0; i < line.size(); ++i) {
+    const char c = line[i];
+    if (quoted) {
+      if (c == '"' && i + 1 < line.size() && line[i + 1] == '"') {
+        out.back() += '"';
+        ++i;
+      } else if (c == '"') {
+        quoted = false;
+      } else {
+        out.back() += c;
+      }
+    } else if (c == '"') {
+      quoted = true;
+    } else if (c == ',') {
+      out.emplace_back();
+    } else {
+      out.back() += c;
+    }
   }
-  if (!line.empty() && line.back() == ',') out.push_back("");
+  for (auto& f : out) f = TrimField(f);
   return out;
 }
 
+std::vector<std::string> SplitCsvTrimmed(const std::string& line) {
+  if (line.empty()) return {};
+  return SplitCsvLine(line);
+}
+
 double ParseCsvNumber(const std::string& field, const std::string& where, const std::string& column) {
-  const size_t a = field.find_first_not_of(" \t\r");
-  const std::string t = a == std::string::npos ? "" : field.substr(a, field.find_last_not_of(" \t\r") - a + 1);
+  const std::string t = TrimField(field);
   char* end = nullptr;
   errno = 0;
   const double v = std::strtod(t.c_str(), &end);

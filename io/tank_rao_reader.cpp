@@ -6,29 +6,11 @@
 #include <fstream>
 #include <map>
 
+#include "io/csv_fields.h"
 #include "io/input_error.h"
 
 namespace hullopt::io {
 namespace {
-
-std::string Trim(const std::string& s) {
-  const auto b = s.find_first_not_of(" \t\r");
-  if (b == std::string::npos) return "";
-  const auto e = s.find_last_not_of(" \t\r");
-  return s.substr(b, e - b + 1);
-}
-
-std::vector<std::string> Split(const std::string& line) {
-  std::vector<std::string> out;
-  std::string::size_type start = 0;
-  while (true) {
-    const auto comma = line.find(',', start);
-    out.push_back(Trim(line.substr(start, comma == std::string::npos ? std::string::npos : comma - start)));
-    if (comma == std::string::npos) break;
-    start = comma + 1;
-  }
-  return out;
-}
 
 // Largest plausible non-dimensional RAO magnitude: far above any measured peak (the paper's and the Delft 372
 // data peak below 3), far below values whose squares overflow in the fit's residuals.
@@ -52,9 +34,9 @@ std::vector<opt::TankRaoPoint> ReadTankRaoCsv(const std::string& file) {
   std::vector<std::string> header;
   while (std::getline(in, line)) {
     ++lineno;
-    const std::string t = Trim(line);
+    const std::string t = TrimField(line);
     if (t.empty() || t[0] == '#') continue;
-    header = Split(t);
+    header = SplitCsvLine(t);
     break;
   }
   if (header.empty()) throw InputError(file + ": empty file (no header line; " + contract + ")");
@@ -82,9 +64,9 @@ std::vector<opt::TankRaoPoint> ReadTankRaoCsv(const std::string& file) {
   std::vector<opt::TankRaoPoint> points;
   while (std::getline(in, line)) {
     ++lineno;
-    const std::string t = Trim(line);
+    const std::string t = TrimField(line);
     if (t.empty() || t[0] == '#') continue;
-    const std::vector<std::string> f = Split(t);
+    const std::vector<std::string> f = SplitCsvLine(t);
     const std::string where = file + ":" + std::to_string(lineno);
     if (f.size() != header.size()) {
       throw InputError(where + ": " + std::to_string(f.size()) + " fields, the header has " +

@@ -17,9 +17,8 @@ void CheckFrequencies(const std::vector<double>& omega_rad_s) {
 }
 }  // namespace
 
-std::array<std::complex<double>, 2> SolvePeriodicFrequency(const HeadSeaShipModel& model, double w,
-                                                           const PeriodicStripForce& strip,
-                                                           PeriodicKinematics kinematics) {
+HeadSeaCoefficients PeriodicCoefficients(const HeadSeaShipModel& model, double w,
+                                         const PeriodicStripForce& strip, PeriodicKinematics kinematics) {
   const auto& st = model.stations();
   const int N = model.Steps();
   const double U = model.speed(), g = model.g(), rho = model.rho(), dt = model.dt();
@@ -39,7 +38,13 @@ std::array<std::complex<double>, 2> SolvePeriodicFrequency(const HeadSeaShipMode
     eikx[m] = std::polar(1.0, k * st[m].x_cg_m);
     nz_ekz[m] = st[m].nz.array() * (k * st[m].z_mid.array()).exp();
   }
-  cd F33 = 0, F35 = 0, F3A = 0, F53 = 0, F55 = 0, F5A = 0;
+  HeadSeaCoefficients c;
+  c.omega_rad_s = w;
+  c.omega_e_rad_s = we;
+  c.motion_omega_rad_s = wm;
+  c.k_rad_m = k;
+  c.mass_kg = model.mass();
+  c.inertia_kg_m2 = model.pitch_inertia();
   for (int n = 0; n < N; ++n) {
     const StationData& s = st[n];
     cd h = 0, p = 0, a = 0;  // strip force per unit heave, pitch and wave amplitude
@@ -50,24 +55,54 @@ std::array<std::complex<double>, 2> SolvePeriodicFrequency(const HeadSeaShipMode
       p += l * unit * (U - iwe * st[m].x_cg_m);
       a += l * (-iw) * strip.dot(n, m, nz_ekz[m], we) * eikx[m];
     }
-    // Hydrostatic restoring, Froude–Krylov and the empirical damping (see head_sea_ship_model.h).
+    // The empirical damping (against v − ζ_t), hydrostatic restoring and Froude–Krylov (head_sea_ship_model.h).
     const double B = s.beam_m, x = s.x_cg_m, dx = s.weight_m;
-    h += -rho * g * B - damp * B * iwe;
-    p += rho * g * B * x - damp * B * (U - iwe * x);
-    a += rho * g * s.FroudeKrylovWidth(k) * eikx[n] + damp * B * iw * eikx[n];
-    F33 += h * dx;
-    F35 += p * dx;
-    F3A += a * dx;
-    F53 -= x * h * dx;
-    F55 -= x * p * dx;
-    F5A -= x * a * dx;
+    h += -damp * B * iwe;
+    p += -damp * B * (U - iwe * x);
+    const cd fk = rho * g * s.FroudeKrylovWidth(k) * eikx[n], dw = damp * B * iw * eikx[n];
+    c.moving[0][0] += h * dx;
+    c.moving[0][1] += p * dx;
+    c.moving[1][0] -= x * h * dx;
+    c.moving[1][1] -= x * p * dx;
+    c.restoring[0][0] += rho * g * B * dx;
+    c.restoring[0][1] -= rho * g * B * x * dx;
+    c.restoring[1][0] -= rho * g * B * x * dx;
+    c.restoring[1][1] += rho * g * B * x * x * dx;
+    c.diffraction[0] += a * dx;
+    c.diffraction[1] -= x * a * dx;
+    c.froude_krylov[0] += fk * dx;
+    c.froude_krylov[1] -= x * fk * dx;
+    c.damping_wave[0] += dw * dx;
+    c.damping_wave[1] -= x * dw * dx;
   }
-  // Cramer's rule on the 2×2 system: NaN or infinity anywhere in it propagates into X (a pivoting solver
-  // could silently treat a NaN row as rank-deficient and return zeros).
-  const cd a11 = -wm * wm * model.mass() - F33, a12 = -F35, a21 = -F53;
-  const cd a22 = -wm * wm * model.pitch_inertia() - F55;
-  const cd det = a11 * a22 - a12 * a21;
-  return {(a22 * F3A - a12 * F5A) / det, (a11 * F5A - a21 * F3A) / det / k};
+  return c;
+}
+
+std::array<std::complex<double>, 2> SolvePeriodicFrequency(const HeadSeaShipModel& model, double w,
+                                                           const PeriodicStripForce& strip,
+                                                           PeriodicKinematics kinematics) {
+  return PeriodicCoefficients(model, w, strip, kinematics).Solve();
+}
+
+std::vector<HeadSeaCoefficients> PeriodicCoefficientSweep(const HeadSeaShipModel& model,
+                                                          const std::vector<double>& omega_rad_s,
+                                                          const PeriodicStripForce& strip,
+                                                          PeriodicKinematics kinematics) {
+  CheckFrequencies(omega_rad_s);
+  std::vector<HeadSeaCoefficients> out(omega_rad_s.size());
+#pragma omp parallel for schedule(dynamic)
+  for (int f = 0; f < static_cast<int>(omega_rad_s.size()); ++f)
+    out[f] = PeriodicCoefficients(model, omega_rad_s[f], strip, kinematics);
+  return out;
+}
+
+PeriodicStripForce KernelStripForce(const StripKernel& kernel) {
+  PeriodicStripForce strip;
+  strip.first_step = [](int) { return 0; };
+  strip.dot = [&kernel](int n, int m, const Eigen::VectorXd& v, double) -> std::complex<double> {
+    return kernel.force[n][m].dot(v);
+  };
+  return strip;
 }
 
 RaoTable SolvePeriodicRaos(const HeadSeaShipModel& model, const std::vector<double>& omega_rad_s,
@@ -98,13 +133,7 @@ RaoTable SolvePeriodicRaos(const HeadSeaShipModel& model, const std::vector<doub
 
 RaoTable SolvePeriodicRaos(const HeadSeaShipModel& model, const std::vector<double>& omega_rad_s,
                            PeriodicKinematics kinematics) {
-  const StripKernel& kernel = model.kernel();
-  PeriodicStripForce strip;
-  strip.first_step = [](int) { return 0; };
-  strip.dot = [&kernel](int n, int m, const Eigen::VectorXd& v, double) -> std::complex<double> {
-    return kernel.force[n][m].dot(v);
-  };
-  return SolvePeriodicRaos(model, omega_rad_s, strip, kinematics);
+  return SolvePeriodicRaos(model, omega_rad_s, KernelStripForce(model.kernel()), kinematics);
 }
 
 }  // namespace hullopt::sk

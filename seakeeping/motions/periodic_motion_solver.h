@@ -12,6 +12,7 @@
 #include <functional>
 #include <vector>
 
+#include "seakeeping/motions/head_sea_coefficients.h"
 #include "seakeeping/motions/head_sea_ship_model.h"
 #include "seakeeping/motions/rao_table.h"
 
@@ -31,7 +32,22 @@ struct PeriodicStripForce {
 /// round-off; the two differ by the trapezoid frequency warp (ω_e Δt)²/12.
 enum class PeriodicKinematics { kExact, kTrapezoid };
 
-/// X3/A and X5/(kA) at one wave frequency ω [rad/s] (no finiteness check).
+/// The coefficients of the 2×2 system at one wave frequency ω [rad/s] (head_sea_coefficients.h): the strip
+/// force's response to unit heave, unit pitch (radiation, with the forward-speed terms) and the unit wave
+/// (diffraction), plus the hydrostatic, Froude–Krylov and Cs parts. No finiteness check.
+HeadSeaCoefficients PeriodicCoefficients(const HeadSeaShipModel& model, double omega_rad_s,
+                                         const PeriodicStripForce& strip,
+                                         PeriodicKinematics kinematics = PeriodicKinematics::kExact);
+
+/// PeriodicCoefficients at each frequency (> 0; in parallel, identical for any thread count).
+std::vector<HeadSeaCoefficients> PeriodicCoefficientSweep(
+    const HeadSeaShipModel& model, const std::vector<double>& omega_rad_s, const PeriodicStripForce& strip,
+    PeriodicKinematics kinematics = PeriodicKinematics::kExact);
+
+/// The time-domain kernel as a periodic strip force: dot = force[n][m]·Ṽ. kernel must outlive the result.
+PeriodicStripForce KernelStripForce(const StripKernel& kernel);
+
+/// X3/A and X5/(kA) at one wave frequency ω [rad/s]: PeriodicCoefficients(...).Solve() (no finiteness check).
 std::array<std::complex<double>, 2> SolvePeriodicFrequency(
     const HeadSeaShipModel& model, double omega_rad_s, const PeriodicStripForce& strip,
     PeriodicKinematics kinematics = PeriodicKinematics::kExact);

@@ -1,9 +1,11 @@
 #include "seakeeping/motions/rao_solver.h"
 
-#include "seakeeping/motions/rao_checks.h"
-
+#include <cmath>
+#include <sstream>
 #include <stdexcept>
 
+#include "seakeeping/motions/rao_checks.h"
+#include "seakeeping/motions/encounter_frequency.h"
 #include "seakeeping/motions/periodic_motion_solver.h"
 #include "seakeeping/strip/strip_force_model.h"
 #include "seakeeping/strip/strip_kernel_builder.h"
@@ -89,6 +91,68 @@ RaoTable ComputeRaos(const hull::HullForm& hull, const hull::MassProperties& mas
   RequireFiniteRaos(t);
   t.warnings = StripKernelWarnings(kernel);
   for (const auto& w : RaoResonanceWarnings(t)) t.warnings.push_back(w);
+  return t;
+}
+
+CoefficientTable ComputeCoefficients(const hull::HullForm& hull, const hull::MassProperties& mass,
+                                     double speed_m_s, double rho_kg_m3, double g_m_s2,
+                                     const std::vector<double>& omega_rad_s, const RaoSolverOptions& options,
+                                     const StripKernelBuilder& builder) {
+  std::string err;
+  if (!options.IsValid(&err)) throw std::invalid_argument(err);
+  if (options.path == RaoSolverOptions::Path::kTimeMarching)
+    throw std::invalid_argument(
+        "coefficients come from the periodic steady state of the strip equations; path: time_marching "
+        "marches one history and has none (use path: periodic, the same kernel)");
+  if (omega_rad_s.empty()) throw std::invalid_argument("coefficients: the frequency list is empty");
+  StripGeometryOptions g;
+  g.sections = options.sections;
+  g.panels = options.panels;
+  g.layout = options.layout;
+  // Geometry first (cheap): the frequency check needs only Δt.
+  StripKernel kernel = StripKernelGeometry(hull, g, speed_m_s, rho_kg_m3, g_m_s2);
+  for (double w : omega_rad_s) {
+    if (!(w > 0.0) || !std::isfinite(w))
+      throw std::invalid_argument("coefficients: wave frequency " + std::to_string(w) + " rad/s must be > 0");
+    const double we = HeadSeaEncounterFrequency(w, speed_m_s, g_m_s2);
+    if (we * kernel.dt_s > kMaxEncounterStepPhase) {
+      std::ostringstream os;
+      os << "encounter frequency omega_e = " << we << " rad/s (omega = " << w << " rad/s) is outside the strip "
+         << "kernel's range: omega_e*dt = " << we * kernel.dt_s << " > pi/4 (fewer than 8 strip steps of dt = "
+         << kernel.dt_s << " s per encounter period); the highest valid omega_e is "
+         << kMaxEncounterStepPhase / kernel.dt_s << " rad/s, or use at least "
+         << static_cast<int>(std::ceil(options.sections * we * kernel.dt_s / kMaxEncounterStepPhase))
+         << " sections";
+      throw std::invalid_argument(os.str());
+    }
+  }
+  CoefficientTable t;
+  t.speed_m_s = speed_m_s;
+  t.g_m_s2 = g_m_s2;
+  t.dt_s = kernel.dt_s;
+  if (options.method == RaoSolverOptions::Method::kStripTheory) {
+    const HeadSeaShipModel model(kernel, mass, options.motion);
+    t.rows = StripTheoryCoefficients(model, omega_rad_s,
+                                     FrequencyDomainSectionRows(kernel, options.panels, options.interaction));
+  } else {
+    kernel = BuildHullStripKernel(hull, options, speed_m_s, rho_kg_m3, g_m_s2, builder);
+    const HeadSeaShipModel model(kernel, mass, options.motion);
+    t.rows = PeriodicCoefficientSweep(model, omega_rad_s, KernelStripForce(kernel));
+    t.warnings = StripKernelWarnings(kernel);
+  }
+  for (const auto& c : t.rows) {
+    bool ok = true;
+    for (int i = 0; i < 2; ++i) {
+      ok = ok && std::isfinite(std::abs(c.Exciting(i)));
+      for (int j = 0; j < 2; ++j) ok = ok && std::isfinite(std::abs(c.moving[i][j]));
+    }
+    if (!ok) {
+      std::ostringstream os;
+      os << "hull '" << options.motion.hull_name << "': non-finite coefficients at omega = " << c.omega_rad_s
+         << " rad/s (omega_e = " << c.omega_e_rad_s << " rad/s)";
+      throw std::domain_error(os.str());
+    }
+  }
   return t;
 }
 

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "parametric_hull/hull_form.h"
+#include "seakeeping/motions/head_sea_coefficients.h"
 #include "seakeeping/motions/head_sea_ship_model.h"
 #include "seakeeping/motions/rao_table.h"
 #include "seakeeping/strip/strip_geometry.h"
@@ -50,5 +51,28 @@ StripKernel BuildHullStripKernel(const hull::HullForm& hull, const RaoSolverOpti
 RaoTable ComputeRaos(const hull::HullForm& hull, const hull::MassProperties& mass, double speed_m_s,
                      double rho_kg_m3, double g_m_s2, const std::vector<double>& omega_rad_s,
                      const RaoSolverOptions& options, const StripKernelBuilder& builder);
+
+/// Largest ω_e Δt (Δt = Δx/U, the strip step) at which coefficients are given: π/4, 8 strip steps per
+/// encounter period. The strip force is periodic in ω_e with period 2π/Δt (aliased beyond ω_e Δt = π), and the
+/// BDF2 momentum difference errs by (ω_e Δt)²/3, 21% at π/4; beyond it the kernel does not resolve the motion.
+constexpr double kMaxEncounterStepPhase = 0.7853981633974483;
+
+struct CoefficientTable {
+  double speed_m_s = 0.0;  ///< [m/s]
+  double g_m_s2 = 9.81;
+  double dt_s = 0.0;  ///< [s] strip step Δx/U
+  std::vector<HeadSeaCoefficients> rows;  ///< one per wave frequency, increasing
+  std::vector<std::string> warnings;      ///< as RaoTable::warnings
+};
+
+/// The coefficients of the heave–pitch equations (head_sea_coefficients.h) at the wave frequencies, from the
+/// same strip kernel (time-domain method) or 2D sections (strip theory) as ComputeRaos: solving them gives
+/// ComputeRaos' periodic-path RAOs. Throws std::invalid_argument for bad options or frequencies, for
+/// Path::kTimeMarching (a marched history has no per-frequency coefficients) and for an encounter frequency
+/// with ω_e Δt > kMaxEncounterStepPhase (naming it and the sections that would resolve it).
+CoefficientTable ComputeCoefficients(const hull::HullForm& hull, const hull::MassProperties& mass,
+                                     double speed_m_s, double rho_kg_m3, double g_m_s2,
+                                     const std::vector<double>& omega_rad_s, const RaoSolverOptions& options,
+                                     const StripKernelBuilder& builder);
 
 }  // namespace hullopt::sk

@@ -8,8 +8,8 @@
 // heave; for the wave, Haskind: the same row applied to the incident-wave normal velocity gives the
 // diffraction force). The forward-speed terms come from the substantial derivative along the hull,
 //   f = −(iω_e − U ∂/∂x)[Z w],  −iω_e Z w = R·Ṽ,
-// taken on the strip grid as (G_n − e^{−iω_e Δt} G_{n−1})/Δt, i.e. the same operator the time-domain strips
-// apply. Integrated by parts this is STF's speed-dependent coefficients (A35 = −∫x a dx − (U/ω_e²)B33, B35 =
+// taken on the strip grid as f_n = F_n + (F_n − F_{n−1})/(iω_e Δt), F = −iω_e Z w the section's 2D force (the
+// x-derivative a backward difference; the time derivative exact, iω_e). Integrated by parts this is STF's speed-dependent coefficients (A35 = −∫x a dx − (U/ω_e²)B33, B35 =
 // −∫x b dx + U A33, A55 = ∫x² a dx + (U²/ω_e²)A33, ...) with the transom terms of a section that ends at the
 // stern, and the STF diffraction term (U/iω_e)h3. Froude–Krylov, hydrostatics and Cs damping as in
 // head_sea_ship_model.h.
@@ -17,6 +17,7 @@
 #include <functional>
 #include <vector>
 
+#include "seakeeping/motions/head_sea_coefficients.h"
 #include "seakeeping/motions/head_sea_ship_model.h"
 #include "seakeeping/motions/rao_table.h"
 #include "seakeeping/strip/strip_kernel.h"
@@ -39,6 +40,12 @@ Eigen::RowVectorXcd UniformHeaveRow(const std::vector<Panel>& panels, double a33
 /// interaction: all bodies of a step in one 2D problem; false: each body alone. geometry must outlive it.
 SectionRowProvider FrequencyDomainSectionRows(const StripKernel& geometry, int panels_per_body,
                                               bool interaction = true);
+
+/// The coefficients of the strip-theory equations at each wave frequency (head_sea_coefficients.h), from the
+/// same rows and strip grid as SolveStripTheoryRaos. Throws std::invalid_argument for a bad frequency.
+std::vector<HeadSeaCoefficients> StripTheoryCoefficients(const HeadSeaShipModel& model,
+                                                         const std::vector<double>& omega_rad_s,
+                                                         const SectionRowProvider& rows);
 
 /// RAOs by strip theory at the wave frequencies (model: geometry, mass, Cs; its kernel's force rows are not
 /// used). Throws like SolvePeriodicRaos.

@@ -264,7 +264,7 @@ TEST_CASE("irregular sea: marched time series is the superposition of periodic R
   CHECK(ts.wave_at_cg_m[last] == Approx(z).margin(1e-12));
 }
 
-TEST_CASE("strip theory (STF) path: the momentum kernel exactly, and the continuous closed form with damping",
+TEST_CASE("strip theory (STF) path: the momentum kernel to its lag error, and the continuous closed form with damping",
           "[motions][stf]") {
   BoxHull h;
   h.sections = 400;
@@ -276,16 +276,24 @@ TEST_CASE("strip theory (STF) path: the momentum kernel exactly, and the continu
   std::vector<double> we;
   for (double e = 1.0; e <= 9.0; e += 1.0) we.push_back(e);
   const auto w = OmegaFromEncounter(we, h.speed, h.g);
-  // (1) b = 0: the rows −iω_e a c/(iω_e Δt) are the box momentum kernel's rows; same numbers.
+  // (1) b = 0: the box momentum kernel's rows are the first-order time difference of the strip momentum,
+  // (J_n − e^{−iω_e Δt} J_{n−1})/Δt, whose phase error ω_e Δt/2 strip theory does not have (its time derivative
+  // is exact, strip_theory_stf.h): the two agree to that error, ω_e Δt ≤ 0.03 here, of the peak.
   const auto stf0 = sk::SolveStripTheoryRaos(model, w, [&](int n, double omega_e) {
     return sk::UniformHeaveRow(geometry.panels[n], a, 0.0, omega_e);
   });
   const auto momentum = BoxKernel(h, a);
   const sk::HeadSeaShipModel kmodel(momentum, BoxMass(h), opt);
   const auto ref0 = sk::SolvePeriodicRaos(kmodel, w);
+  const double lag_error = we.back() * geometry.dt_s;  // the largest ω_e Δt
+  double peak03 = 0, peak05 = 0;
   for (std::size_t i = 0; i < w.size(); ++i) {
-    CHECK(std::abs(stf0.heave[i] - ref0.heave[i]) < 1e-10 * std::abs(ref0.heave[i]));  // round-off only
-    CHECK(std::abs(stf0.pitch[i] - ref0.pitch[i]) < 1e-10 * std::abs(ref0.pitch[i]));
+    peak03 = std::max(peak03, std::abs(ref0.heave[i]));
+    peak05 = std::max(peak05, std::abs(ref0.pitch[i]));
+  }
+  for (std::size_t i = 0; i < w.size(); ++i) {
+    CHECK(std::abs(stf0.heave[i] - ref0.heave[i]) < lag_error * peak03);
+    CHECK(std::abs(stf0.pitch[i] - ref0.pitch[i]) < lag_error * peak05);
   }
   // (2) b > 0: against the continuous equations with Z = a + b/(iω_e) (1% of the peak, as above: O(Δx/L)).
   const auto stf = sk::SolveStripTheoryRaos(model, w, [&](int n, double omega_e) {
