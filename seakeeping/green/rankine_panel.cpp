@@ -16,7 +16,8 @@ double Q(double a, double w) {
   return log_term - 2.0 * a + atan_term;
 }
 
-SourceInfluence Influence(double y1, double z1, double y2, double z2, double y, double z, bool is_image) {
+SourceInfluence Influence(double y1, double z1, double y2, double z2, double y, double z, bool is_image,
+                          double turn_rad = 0.0) {
   const double dy = y2 - y1, dz = z2 - z1;
   const double L = std::hypot(dy, dz);
   const double ty = dy / L, tz = dz / L;  // tangent
@@ -24,12 +25,14 @@ SourceInfluence Influence(double y1, double z1, double y2, double z2, double y, 
   const double u = (y - y1) * ty + (z - z1) * tz;
   double w = (y - y1) * ny + (z - z1) * nz;
   // A point on the panel line is put on the normal side (+0), so the self term is +1/2 (not −1/2).
+  const bool on_panel = !is_image && std::fabs(w) < 1e-13 * L && u > 0.0 && u < L;
   if (!is_image && std::fabs(w) < 1e-13 * L) w = +0.0;
   SourceInfluence out;
   out.phi = kInv4Pi * (Q(u, w) - Q(u - L, w));
   const double r1 = u * u + w * w, r2 = (u - L) * (u - L) + w * w;
   const double vu = (r1 > 0.0 && r2 > 0.0) ? kInv4Pi * std::log(r1 / r2) : 0.0;  // log singular at end points
-  const double vw = kInv2Pi * (std::atan2(w, u - L) - std::atan2(w, u));
+  double vw = kInv2Pi * (std::atan2(w, u - L) - std::atan2(w, u));
+  if (on_panel) vw += kCurvedPanelSelfFactor * turn_rad * kInv4Pi;  // curvature term (header)
   out.vy = vu * ty + vw * ny;
   out.vz = vu * tz + vw * nz;
   return out;
@@ -38,7 +41,7 @@ SourceInfluence Influence(double y1, double z1, double y2, double z2, double y, 
 }  // namespace
 
 SourceInfluence RankinePanelInfluence(const Panel& p, double y, double z) {
-  return Influence(p.y1, p.z1, p.y2, p.z2, y, z, false);
+  return Influence(p.y1, p.z1, p.y2, p.z2, y, z, false, p.turn_rad);
 }
 
 SourceInfluence ImagePanelInfluence(const Panel& p, double y, double z) {

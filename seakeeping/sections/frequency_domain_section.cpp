@@ -14,6 +14,9 @@ namespace {
 
 using C = std::complex<double>;
 constexpr double kInv2Pi = 0.5 / M_PI;
+// The lid condition tapers to the exterior free-surface condition over this fraction of the half beam from
+// each waterline (see the lid rows in SolveSectionFrequencyDomain).
+constexpr double kLidTaperFraction = 0.5;
 
 // Gauss–Legendre nodes on [0, 1] and weights summing to 1 (Newton on P_n; exact to rounding for n <= 20).
 struct GaussRule {
@@ -144,14 +147,21 @@ SectionHydrodynamics SolveSectionFrequencyDomain(const std::vector<std::vector<P
   const double nu = omega * omega / g;
   const GaussRule rule = MakeGaussRule(opt.gauss_points);
 
-  // Body panels, then lid panels (z = 0 from the starboard to the port waterline of each section).
+  // Body panels, then lid panels (z = 0 from the starboard to the port waterline of each section), cosine-spaced
+  // so that the lid panels at the waterline corners are as short as the body panels there; each lid panel's
+  // taper weight q (see the lid rows below).
   std::vector<Panel> body, lid;
+  std::vector<double> taper;
   for (const auto& s : sections) body.insert(body.end(), s.begin(), s.end());
   for (const auto& s : sections) {
     const int n_lid = opt.lid_panels < 0 ? std::max(4, static_cast<int>(s.size()) / 2) : opt.lid_panels;
-    const double ys = s.back().y2, yp = s.front().y1;
-    for (int i = 0; i < n_lid; ++i)
-      lid.push_back({ys + (yp - ys) * i / n_lid, 0.0, ys + (yp - ys) * (i + 1) / n_lid, 0.0});
+    const double ys = s.back().y2, yp = s.front().y1, half = 0.5 * (yp - ys);
+    auto node = [&](int i) { return ys + half * (1.0 - std::cos(M_PI * i / n_lid)); };
+    for (int i = 0; i < n_lid; ++i) {
+      lid.push_back({node(i), 0.0, node(i + 1), 0.0});
+      const double d = std::min(lid.back().MidY() - ys, yp - lid.back().MidY());
+      taper.push_back(std::min(1.0, d / (kLidTaperFraction * half)));
+    }
   }
   const int nb = static_cast<int>(body.size()), nl = static_cast<int>(lid.size()), n = nb + nl;
   auto source = [&](int j) -> const Panel& { return j < nb ? body[j] : lid[j - nb]; };
@@ -159,15 +169,21 @@ SectionHydrodynamics SolveSectionFrequencyDomain(const std::vector<std::vector<P
   // Influence matrices: normal velocity at body midpoints, potential at body midpoints, and the lid condition
   // at lid midpoints. On z = 0 every source panel's potential satisfies φ_z = νφ (the Green function's
   // free-surface condition) except for the lid sheet's own jump: just below the lid (inside the body)
-  // ∂φ/∂z = νφ − σ. The lid rows impose ∂φ/∂z + νφ = 0 there, i.e. 2νφ − σ = 0: the free-surface condition
-  // with the opposite sign. Without a lid the interior problem (φ = 0 on the body, φ_z − νφ = 0 on the lid)
-  // has the irregular frequencies as eigenvalues; with φ_z + νφ = 0 it has none (∫|∇φ|² = −ν∫_lid |φ|² forces
-  // φ ≡ 0, so all sources vanish). The condition is local Neumann at the waterline corners, where it is
-  // compatible with any body potential, and tends to φ = 0 at high frequency, where the body potential at the
-  // waterline vanishes too: the source densities stay bounded. A Dirichlet lid (φ = 0 at all frequencies)
-  // conflicts with the body potential at the corners (φ jumps from φ(waterline) to 0): the densities grow
-  // like 1/r there, which constant panels cannot represent, and the result drifts with the lid panelling
-  // (0.21 ρA for a 14-panel semicircle, 4 → 56 lid panels; docs/theory.md).
+  // ∂φ/∂z = νφ − σ. The lid rows impose ∂φ/∂z + (2q − 1)νφ = 0 there, i.e. 2qνφ − σ = 0, q the taper weight:
+  // in the middle of the lid (q = 1) the free-surface condition with the opposite sign. Without a lid the
+  // interior problem (φ = 0 on the body, φ_z − νφ = 0 on the lid) has the irregular frequencies as
+  // eigenvalues; with q = 1 everywhere it has none (∫|∇φ|² = −ν∫_lid |φ|² forces φ ≡ 0, so all sources
+  // vanish). But then the interior potential cannot meet the body potential at the waterline corners
+  // smoothly: its slope along the body (from the exterior, ∂φ/∂z = νφ) and the lid's ∂φ/∂z = −νφ differ by
+  // 2νφ, which makes the interior gradient, and so the body source density, log-singular at the corners, and
+  // the lid densities end there at 2νφ against the body sheet. Constant panels then converge at first order,
+  // worst at high frequency (semicircle b33 at ω²R/g = 3: +16%, +10% at 14, 28 panels against the lid-off
+  // +6%, +1.7%). With q → 0 linearly towards each waterline (over kLidTaperFraction of the half beam) the lid
+  // density vanishes at the corners, the condition there is the exterior one and the corner is regular; the
+  // interior problem keeps ∫|∇φ|² = ν∫(1 − 2q)|φ|² with a positive part only next to the corners, where
+  // φ → 0 on the body, which pushes its eigenvalues far above the range of the tests (none up to ω²R/g = 7
+  // for the semicircle and the B/T = 2 rectangle). A Dirichlet lid (φ = 0) conflicts with the body potential
+  // at the corners (φ jumps from φ(waterline) to 0): the densities grow like 1/r there (docs/theory.md).
   Eigen::MatrixXcd A(n, n);          // system: body rows ∂φ/∂n, lid rows ∂φ/∂z + νφ from below
   Eigen::MatrixXcd Phi_body(nb, n);  // potential at body midpoints
   for (int i = 0; i < n; ++i) {
@@ -181,7 +197,7 @@ SectionHydrodynamics SolveSectionFrequencyDomain(const std::vector<std::vector<P
         A(i, j) = inf.vy * nrm[0] + inf.vz * nrm[1];
         Phi_body(i, j) = inf.phi;
       } else {
-        A(i, j) = 2.0 * nu * inf.phi - (j == i ? 1.0 : 0.0);
+        A(i, j) = 2.0 * nu * taper[i - nb] * inf.phi - (j == i ? 1.0 : 0.0);
       }
     }
   }

@@ -8,12 +8,14 @@
 // is in closed form (rankine_panel.h); the smooth wave part is integrated with Gauss–Legendre on sub-segments
 // refined towards the image of the field point and to a fraction of a wavelength. Irregular frequencies are
 // removed with the extended boundary condition of the source formulation: source panels on each section's
-// interior free surface (the "lid", z = 0 between the waterline points) and the condition ∂φ/∂z + νφ = 0 just
-// below the lid midpoints (the free-surface condition with the opposite sign). Without it the interior
-// problem (φ = 0 on the body, ∂φ/∂z − νφ = 0 on the lid) has the irregular frequencies as eigenvalues; with
-// it the interior problem has none, and its solution stays regular at the waterline corners, so the lid
-// leaves the exterior solution unchanged up to a small discretisation error. (A Dirichlet lid, φ = 0, removes
-// the irregular frequencies too but makes the source densities singular at the corners.)
+// interior free surface (the "lid", z = 0 between the waterline points, cosine-spaced) and the condition
+// ∂φ/∂z + (2q − 1)νφ = 0 just below the lid midpoints: in the middle of the lid (q = 1) the free-surface
+// condition with the opposite sign, tapering linearly to the exterior one (q = 0) at the waterline corners.
+// Without it the interior problem (φ = 0 on the body, ∂φ/∂z − νφ = 0 on the lid) has the irregular
+// frequencies as eigenvalues; with it they are pushed far above the range of interest, and the interior
+// solution stays regular at the corners (an untapered lid, q = 1 everywhere, makes the body source density
+// log-singular there and the solver first-order; a Dirichlet lid, φ = 0, makes it singular like 1/r), so the
+// lid leaves the exterior solution unchanged up to a second-order discretisation error.
 //
 // Conventions: time factor e^{iωt}; motion amplitude X_j of mode j (0 sway along +y, 1 heave along +z, 2 roll
 // about +x through the strip origin y = z = 0, so the generalised normal is n_roll = y n_z − z n_y); force on

@@ -96,8 +96,8 @@ StripKernel StripKernelGeometry(const hull::HullForm& hull, const StripGeometryO
       try {
         auto ps = PanelSymmetricSection(half, options.panels, b->y_centre_m);
         panels.insert(panels.end(), ps.begin(), ps.end());
-        if (mirrored) {
-          ps = PanelSymmetricSection(half, options.panels, -b->y_centre_m);
+        if (mirrored) {  // the same panels shifted to the mirror demihull (y → y − 2 y_centre)
+          for (auto& p : ps) p.y1 -= 2.0 * b->y_centre_m, p.y2 -= 2.0 * b->y_centre_m;
           panels.insert(panels.end(), ps.begin(), ps.end());
         }
       } catch (const std::invalid_argument& e) {

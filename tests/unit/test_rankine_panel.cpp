@@ -92,3 +92,52 @@ TEST_CASE("flux of a closed polygon of unit-density panels converges to its peri
   CHECK(std::fabs(e2) < kTolFirstOrder192);
   CHECK(e1 / e2 == Approx(2.0).epsilon(0.05));
 }
+
+namespace {
+// Fourier eigenvalue m of the normal-velocity operator of a regular n-gon inscribed in the unit circle (panel
+// j turns by τ = 2π/n), at the midpoint of panel 0: Σ_j A_0j cos(m j τ). `turn`: the panels' turn_rad.
+double PolygonEigenvalue(int n, int m, double turn) {
+  std::vector<Panel> ps;
+  for (int i = 0; i < n; ++i) {
+    const double a1 = -2 * M_PI * i / n, a2 = -2 * M_PI * (i + 1) / n;  // clockwise: normals point outwards
+    ps.push_back({std::cos(a1), std::sin(a1), std::cos(a2), std::sin(a2), turn});
+  }
+  const auto nn = ps[0].Normal();
+  double lambda = 0;
+  for (int j = 0; j < n; ++j) {
+    const auto inf = hullopt::sk::RankinePanelInfluence(ps[j], ps[0].MidY(), ps[0].MidZ());
+    lambda += (inf.vy * nn[0] + inf.vz * nn[1]) * std::cos(2 * M_PI * m * j / n);
+  }
+  return lambda;
+}
+}  // namespace
+
+TEST_CASE("curvature term: polygon eigenvalues converge to the circle's at second order", "[rankine]") {
+  // Closed form for the circle: a source density cos mθ on the unit circle gives the normal velocity
+  // (½ + ½δ_m0) cos mθ on its outside (the kernel ∂/∂n ln r is the constant ½ on the circle). Flat chords fall
+  // short of it by 2 ln 2 · τ/(4π) at first order for every m (the defect the curvature term cancels);
+  // with turn_rad = τ the remaining error is O(τ²).
+  for (int m : {0, 1, 2}) {
+    const double exact = m == 0 ? 1.0 : 0.5;
+    const double e_flat_64 = PolygonEigenvalue(64, m, 0.0) - exact;
+    const double e_flat_128 = PolygonEigenvalue(128, m, 0.0) - exact;
+    CHECK(e_flat_64 / e_flat_128 == Approx(2.0).epsilon(0.05));  // first order without the term
+    constexpr double kTolDefectConstant = 0.02;  // O(τ) correction of the leading constant at 1024 panels
+    const double tau = 2 * M_PI / 1024;
+    CHECK(-(PolygonEigenvalue(1024, m, 0.0) - exact) / (tau / (4 * M_PI)) ==
+          Approx(hullopt::sk::kCurvedPanelSelfFactor).epsilon(kTolDefectConstant));
+    const double e64 = PolygonEigenvalue(64, m, 2 * M_PI / 64) - exact;
+    const double e128 = PolygonEigenvalue(128, m, 2 * M_PI / 128) - exact;
+    INFO("m = " << m << ": flat " << e_flat_64 << ", " << e_flat_128 << "; curved " << e64 << ", " << e128);
+    CHECK(std::fabs(e64) < 0.1 * std::fabs(e_flat_64));
+    CHECK(std::fabs(e64 / e128) > 3.0);  // second order (4 asymptotically)
+  }
+  // A straight panel is unchanged; the term acts only on the panel's own points.
+  const Panel straight{0.0, -1.0, 1.0, -1.0};
+  CHECK(hullopt::sk::RankinePanelInfluence(straight, 0.5, -1.0).vz == Approx(0.5));
+  const Panel bent{0.0, -1.0, 1.0, -1.0, 0.3};
+  CHECK(hullopt::sk::RankinePanelInfluence(bent, 0.5, -1.0).vz ==
+        Approx(0.5 + hullopt::sk::kCurvedPanelSelfFactor * 0.3 / (4 * M_PI)));
+  CHECK(hullopt::sk::RankinePanelInfluence(bent, 0.5, -0.5).vz ==
+        Approx(hullopt::sk::RankinePanelInfluence(straight, 0.5, -0.5).vz));
+}

@@ -5,16 +5,16 @@
 // comparison plot to the build folder (docs/delft372_rao_fn075.svg is a copy).
 //
 // The prediction sits near the edge of the 15%, so the check is made where the discretisation no longer moves
-// it by more than the margin: sections are converged (28 panels: 2.154, 2.152, 2.150 at 40, 80, 160
-// sections), panels converge from below (40 sections: 2.138, 2.154, 2.164, 2.168 at 14, 28, 56, 112 panels,
-// grid maxima), so the converged peak is about 2.17, −14.3% to −14.6%. Checked at 80 × 56: −14.6%, inside by
-// 0.4 points. Reported beside it: 80 × 28, −15.0% (a miss by 0.02 points, the figure of the previous
-// session), and the paper's 40 × 14, −15.5% (the tool's default resolution misses). Findings
+// it by more than the margin. Since the panels carry the curvature term of their self influence (second-order
+// panel convergence, docs/sections.md) the peak hardly depends on the resolution: 2.160 (40 × 14), 2.162
+// (80 × 28), 2.167 (80 × 56), i.e. −14.7%, −14.6%, −14.4%. (With first-order panels it converged from
+// below: 40 sections 2.138, 2.154, 2.164, 2.168 at 14, 28, 56, 112 panels; 80 × 56 −14.6%, 80 × 28 −15.0%,
+// 40 × 14 −15.5%.) Checked at 80 × 56; 80 × 28 and the paper's 40 × 14 are reported. Findings
 // (docs/ship-motions.md): the 2D demihull interaction in the strips lowers the peak by 14% (one demihull
 // alone: 2.47), wholly through the memory part of the coupling, which is verified against the
 // frequency-domain pair (verification_td_twin_release); Cs is not the cause (Cs = 0 raises the peak by about
-// 0.1). The paper's written sectional force (pressure form, reported below) gives −11.7% but loses the pitch
-// resonance; the default is not switched (docs/ship-motions.md). Nothing was tuned toward the tank.
+// 0.1). The paper's written sectional force (pressure form, reported below) gives −9.9% (−11.7% with first-order
+// panels) but loses the pitch resonance; the default is not switched (docs/ship-motions.md). Nothing was tuned toward the tank.
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <iostream>
@@ -55,9 +55,8 @@ TEST_CASE("Delft 372 Fn 0.75: peak heave against the tank", "[validation][delft3
     return sk::ComputeRaos(hullopt::testing::Delft372Hull(HULLOPT_SOURCE_DIR), hullopt::testing::Delft372Mass(),
                            U, kRho, kG, w, o, sk::TransientGreenKernelBuilder(force));
   };
-  // Checked at 80 × 56, the finest resolution measured: the miss margin at 80 × 28 (0.02 points) is smaller
-  // than what panel refinement still moves (40 sections: 2.138, 2.154, 2.164 at 14, 28, 56 panels; sections
-  // are converged: 2.154, 2.152, 2.150 at 40, 80, 160 × 28). 80 × 28 and the paper's 40 × 14 are reported.
+  // Checked at 80 × 56, the finest resolution measured (2.167; 80 × 28 2.162, 40 × 14 2.160). 80 × 28 and the
+  // paper's 40 × 14 are reported.
   const auto rao = compute(80, 56);
   const auto rao_28 = compute(80, 28);
   const auto rao_paper = compute(40, 14);

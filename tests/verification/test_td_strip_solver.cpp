@@ -63,10 +63,12 @@ std::vector<Eigen::VectorXd> RandomVelocities(const std::vector<std::vector<Pane
 TEST_CASE("impulsive added mass of a semicircle converges to rho pi R^2 / 2", "[td][verification]") {
   // Closed form (Lamb; also e.g. Korotkin, "Added Masses of Ship Structures", §5: λ33 = ½ρπR² for the
   // half-immersed circular cylinder): the t = 0+ response of the time-domain solver is the φ = 0 free-surface
-  // problem. Flat constant-strength panels miss the curvature of their own arc, an O(1/N) error (measured
-  // 0.95/N here), so 1% needs ~100 panels; Richardson extrapolation 2a(2N) − a(N) removes the O(1/N) term.
+  // problem. Flat constant-strength panels with the curvature term of their self influence (rankine_panel.h)
+  // converge at second order (measured −1.1%, −0.27%, −0.06%, −0.02% at 14–112 panels; without the term
+  // first order, +6.3% at 14), so the issue's 1% holds from 28 panels, and Richardson extrapolation
+  // (4a(2N) − a(N))/3 removes the O(1/N²) term.
   constexpr double kTolHighFrequency = 0.01;  // issue 3: within 1% of ρπR²/2
-  constexpr double kTolExtrapolated = 0.002;  // O(1/N²) remainder after removing the O(1/N) term
+  constexpr double kTolExtrapolated = 5e-4;   // O(1/N³) remainder after removing the O(1/N²) term
   const double R = 1.3, m0 = kRho * M_PI * R * R / 2;
   std::vector<double> a;
   for (int np : {14, 28, 56, 112}) {
@@ -75,10 +77,10 @@ TEST_CASE("impulsive added mass of a semicircle converges to rho pi R^2 / 2", "[
     a.push_back(-ops.MomentumCurrent(0).dot(ops.Solve(0, HeaveNormals(panels)).col(0)) / m0);
     WARN("semicircle, " << np << " panels: a33(t=0+)/(rho pi R^2/2) = " << a.back());
   }
-  CHECK(std::fabs(a[3] - 1.0) <= kTolHighFrequency);
-  CHECK(std::fabs(2 * a[3] - a[2] - 1.0) <= kTolExtrapolated);
-  // Monotone first-order convergence: each doubling halves the error (ratio 2 ± 0.3).
-  for (int i = 0; i + 2 < 4; ++i) CHECK((a[i] - a[i + 1]) / (a[i + 1] - a[i + 2]) == Approx(2.0).margin(0.3));
+  CHECK(std::fabs(a[1] - 1.0) <= kTolHighFrequency);
+  CHECK(std::fabs((4 * a[3] - a[2]) / 3 - 1.0) <= kTolExtrapolated);
+  // Monotone second-order convergence: each doubling quarters the error (ratio 4 ± 0.6).
+  for (int i = 0; i + 2 < 4; ++i) CHECK((a[i] - a[i + 1]) / (a[i + 1] - a[i + 2]) == Approx(4.0).margin(0.6));
 }
 
 TEST_CASE("strip kernel reproduces the marching solver for changing sections and two bodies",
