@@ -30,12 +30,14 @@ void RunHull(const std::string& config, const std::string& out_dir) {
   bool has_speed = false;
   const io::SpeedOptions speed = io::ParseSpeed(root, false, &has_speed);
   double kg_m = 0.0;
+  double lcg_m = -1.0;  // the running attitude's pivot; default the LCB at rest
   {
     io::YamlMap mass = root.MapOrEmpty("mass");
     kg_m = mass.Number("kg_m", 0.0);
     if (kg_m < 0.0) mass.Fail("kg_m", "must be >= 0 m above the baseline");
-    mass.Skip("lcg_m_from_ap");
+    lcg_m = mass.Number("lcg_m_from_ap", lcg_m);
     mass.Skip("kyy_m");
+    mass.Skip("mass_kg");
     mass.Finish();
   }
   for (const char* k : kOtherCommandsKeys) root.Skip(k);
@@ -48,9 +50,20 @@ void RunHull(const std::string& config, const std::string& out_dir) {
   } catch (const std::logic_error& e) {
     throw io::InputError(config + ": key 'hull': " + e.what());
   }
-  PrepareOutputDir(out_dir, "hull", config, root.resolved());
   io::HydrostaticsReport rep;
   rep.hs = hs;
+  rep.adjustments = hull.adjustments;
+  if (!hull_opts.attitude.IsEvenKeel()) {
+    rep.attitude = hull_opts.attitude;
+    rep.attitude.pivot_x_m = lcg_m >= 0.0 ? lcg_m : hs.lcb_m_from_ap;
+    const hull::HullForm running = io::ApplyHullAttitude(hull_opts, hull, rep.attitude.pivot_x_m, config);
+    try {
+      rep.running = hull::ComputeHydrostatics(running, water.rho_kg_m3, kg_m);
+    } catch (const std::logic_error& e) {
+      throw io::InputError(config + ": key 'hull.attitude': " + e.what());
+    }
+  }
+  PrepareOutputDir(out_dir, "hull", config, root.resolved());
   rep.rho_kg_m3 = water.rho_kg_m3;
   rep.g_m_s2 = water.g_m_s2;
   if (has_speed) rep.speed_m_s = speed.MetresPerSecond(hs.L_m, water.g_m_s2);
@@ -66,6 +79,12 @@ void RunHull(const std::string& config, const std::string& out_dir) {
             << "  Cb " << hs.Cb << "  Cp " << hs.Cp << "  Cm " << hs.Cm << "  Cwp " << hs.Cwp << "  Cvp "
             << hs.Cvp << "  LCB " << hs.LCB_pct_L << " %L  LCF " << hs.LCF_pct_L << " %L";
   if (rep.speed_m_s) std::cout << "  Fr " << *rep.speed_m_s / std::sqrt(water.g_m_s2 * hs.L_m);
+  if (rep.running)
+    std::cout << "\n  running attitude (sinkage " << rep.attitude.sinkage_m << " m + down, trim "
+              << rep.attitude.trim_deg << " deg + bow up, at x = " << rep.attitude.pivot_x_m
+              << " m): displacement " << rep.running->displacement_t << " t, LCB " << rep.running->lcb_m_from_ap
+              << " m from AP, waterplane " << rep.running->awp_m2 << " m^2";
+  for (const auto& a : hull.adjustments) std::cout << "\n  adjusted: " << a;
   std::cout << "\n  wrote " << out_dir
             << "/{hydrostatics.json, offsets.csv, bodyplan.svg, config.resolved.yaml}\n";
 }

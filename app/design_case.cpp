@@ -63,6 +63,7 @@ DesignCase LoadDesignCase(io::YamlMap& root, const std::string& config_file, con
   }
   io::YamlMap mass_map = root.MapOrEmpty("mass");
   d.mass = io::ParseMassConfig(mass_map, d.hydrostatics);
+  d.running_hull = io::ApplyHullAttitude(hull_opts, d.hull, d.mass.lcg_m_from_ap, config_file);
   if (read_speed) d.speed_m_s = speed.MetresPerSecond(d.hydrostatics.L_m, d.water.g_m_s2);
   return d;
 }
@@ -73,7 +74,7 @@ sk::StripKernel BuildDesignKernel(const DesignCase& d) {
                          ": only the time-domain strip method has a frequency-independent strip kernel "
                          "(needed here); use method: time_domain_strip");
   return Guard(d, [&] {
-    return sk::BuildHullStripKernel(d.hull, SolverOptions(d, d.solver.cs), d.speed_m_s, d.water.rho_kg_m3,
+    return sk::BuildHullStripKernel(d.running_hull, SolverOptions(d, d.solver.cs), d.speed_m_s, d.water.rho_kg_m3,
                                     d.water.g_m_s2, sk::TransientGreenKernelBuilder(d.solver.Force()));
   });
 }
@@ -84,6 +85,7 @@ sk::RaoTable DesignRaosFromKernel(const DesignCase& d, const sk::StripKernel& ke
     const sk::HeadSeaShipModel model(kernel, d.mass, SolverOptions(d, cs).motion);
     sk::RaoTable t = sk::SolvePeriodicRaos(model, omega_rad_s);
     t.warnings = sk::StripKernelWarnings(kernel);
+    t.warnings.insert(t.warnings.begin(), d.hull.adjustments.begin(), d.hull.adjustments.end());
     return t;
   });
 }
@@ -92,8 +94,12 @@ sk::RaoTable ComputeDesignRaos(const DesignCase& d, const std::vector<double>& o
                                double cs_override) {
   const double cs = cs_override >= 0.0 ? cs_override : d.solver.cs;
   return Guard(d, [&] {
-    return sk::ComputeRaos(d.hull, d.mass, d.speed_m_s, d.water.rho_kg_m3, d.water.g_m_s2, omega_rad_s,
-                           SolverOptions(d, cs), sk::TransientGreenKernelBuilder(d.solver.Force()));
+    sk::RaoTable t = sk::ComputeRaos(d.running_hull, d.mass, d.speed_m_s, d.water.rho_kg_m3, d.water.g_m_s2,
+                                     omega_rad_s, SolverOptions(d, cs),
+                                     sk::TransientGreenKernelBuilder(d.solver.Force()));
+    // What the generator changed to build the hull goes with every result of it.
+    t.warnings.insert(t.warnings.begin(), d.hull.adjustments.begin(), d.hull.adjustments.end());
+    return t;
   });
 }
 

@@ -19,8 +19,9 @@ namespace hullopt::app {
 
 struct DesignCase {
   std::string name;
-  hull::HullForm hull;
-  hull::Hydrostatics hydrostatics;
+  hull::HullForm hull;          ///< at rest, even keel: coefficients, mass defaults, Fr, passenger positions
+  hull::HullForm running_hull;  ///< at hull.attitude (= hull at even keel): strips and RAOs
+  hull::Hydrostatics hydrostatics;  ///< of `hull` (at rest)
   hull::MassProperties mass;
   io::WaterOptions water;
   double speed_m_s = 0.0;      ///< [m/s]
