@@ -18,6 +18,7 @@
 #include "seakeeping/motions/rao_solver.h"
 #include "seakeeping/strip/strip_geometry.h"
 #include "support/delft372_hull.h"
+#include "support/delft372_tank.h"
 
 namespace sk = hullopt::sk;
 namespace hull = hullopt::hull;
@@ -47,17 +48,8 @@ TEST_CASE("Delft 372 Fn 0.75 at the measured running attitude vs even keel", "[v
   for (std::size_t n = 0; n < model.stations().size(); ++n) awp += model.stations()[n].beam_m * model.stations()[n].weight_m;
   CHECK(awp == Approx(hs1.awp_m2).epsilon(kWaterplaneRelTol));
 
-  const auto tank = hullopt::io::ReadTankRaoCsv(std::string(HULLOPT_SOURCE_DIR) +
-                                                "/data/delft372/delft372_tank_rao_fn075.csv");
-  hullopt::io::MeasuredRao m;
-  m.label = "tank (van 't Veer 1998)";
-  for (const auto& p : tank) {
-    m.lambda_over_L.push_back(p.lambda_over_L);
-    m.heave_amp.push_back(p.heave_amp);
-    m.heave_phase_deg.push_back(p.heave_phase_deg);
-    m.pitch_amp.push_back(p.pitch_amp);
-    m.pitch_phase_deg.push_back(p.pitch_phase_deg);
-  }
+  const auto tank = hullopt::testing::Delft372TankRao(HULLOPT_SOURCE_DIR);
+  const hullopt::io::MeasuredRao m = hullopt::testing::MeasuredFromTank(tank);
   const auto w = sk::WaveFrequencies(
       sk::FrequencySpec::Range(sk::FrequencySpec::Quantity::kLambdaOverL, 0.8, 3.0, 89), U, kG, kL);
   sk::RaoSolverOptions o;

@@ -37,6 +37,22 @@ DesignVariables Base(HullType type) {
   return dv;
 }
 
+// SW1 of Table 1 (hull 9), with the previous (elliptic, scaled) bulb family unless a bulb height is given.
+DesignVariables Sw1() {
+  DesignVariables dv = Base(HullType::kSwath);
+  dv.L_over_B = 16.1;
+  dv.B_over_T = 1.51;
+  dv.Cb = 0.55;
+  dv.Cp = 0.75;
+  dv.Cwp = 0.38;
+  dv.LCB_pct_L = -10.9;
+  dv.LCF_pct_L = -14.6;
+  dv.strut_ratio = 0.7;
+  dv.transom_beam_ratio = 0.3;
+  dv.transom_immersion = 0.6;
+  return dv;
+}
+
 std::string Refusal(const DesignVariables& dv) {
   try {
     GenerateHull(dv);
@@ -88,20 +104,7 @@ TEST_CASE("generated hulls meet their targets: all types and styles", "[generato
     dv.transom_beam_ratio = 0.7;
     CheckTargets(dv);
   }
-  SECTION("SWATH") {
-    DesignVariables dv = Base(HullType::kSwath);
-    dv.L_over_B = 16.1;
-    dv.B_over_T = 1.51;
-    dv.Cb = 0.55;
-    dv.Cp = 0.75;
-    dv.Cwp = 0.38;
-    dv.LCB_pct_L = -10.9;
-    dv.LCF_pct_L = -14.6;
-    dv.strut_ratio = 0.7;
-    dv.transom_beam_ratio = 0.3;
-    dv.transom_immersion = 0.6;
-    CheckTargets(dv);
-  }
+  SECTION("SWATH") { CheckTargets(Sw1()); }
   SECTION("trihull") {
     DesignVariables dv = Base(HullType::kTrihull);
     dv.L_over_B = 8.0;
@@ -187,17 +190,7 @@ TEST_CASE("on_infeasible: nearest builds the nearest feasible waterplane and rec
 
 TEST_CASE("rounded-bulb SWATH: targets met, the bulb keeps its height to the ends (no thin plates)",
           "[generator][swath]") {
-  DesignVariables dv = Base(HullType::kSwath);  // SW1-like: Table 1 hull 9
-  dv.L_over_B = 16.1;
-  dv.B_over_T = 1.51;
-  dv.Cb = 0.55;
-  dv.Cp = 0.75;
-  dv.Cwp = 0.38;
-  dv.LCB_pct_L = -10.9;
-  dv.LCF_pct_L = -14.6;
-  dv.transom_immersion = 0.6;
-  dv.transom_beam_ratio = 0.3;
-  dv.strut_ratio = 0.7;
+  DesignVariables dv = Sw1();
   dv.bulb_height_ratio = 0.8;
   CheckTargets(dv);
   const HullForm h = GenerateHull(dv);

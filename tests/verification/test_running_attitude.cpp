@@ -4,6 +4,7 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <stdexcept>
+#include <vector>
 
 #include "parametric_hull/hull_generator.h"
 #include "parametric_hull/hydrostatics.h"
@@ -18,31 +19,25 @@ namespace {
 // (wedge) sectional area curves here: agreement to round-off, with room for the sums of ~100 terms.
 constexpr double kRoundOff = 1e-12;
 
-// Box demihull L × B with its deck at `deck`, stations every L/20 (Simpson needs an even count of intervals).
+// A prismatic monohull of length L with the half-section `y` (keel) .. `deck` at every station, stations every
+// L/20 (Simpson needs an even count of intervals).
+hull::HullForm Prism(double L, double T, std::vector<double> y, std::vector<double> z) {
+  hull::HullForm h;
+  h.type = "monohull";
+  h.draught_m = T;
+  h.length_m = L;
+  hull::Demihull b;
+  b.role = "main";
+  for (int i = 0; i <= 20; ++i) b.stations.push_back({L * i / 20.0, y, z});
+  h.bodies = {b};
+  return h;
+}
+// Box L × B with its deck at `deck`.
 hull::HullForm Box(double L, double B, double T, double deck) {
-  hull::HullForm h;
-  h.type = "monohull";
-  h.draught_m = T;
-  h.length_m = L;
-  hull::Demihull b;
-  b.role = "main";
-  for (int i = 0; i <= 20; ++i) b.stations.push_back({L * i / 20.0, {0.0, B / 2, B / 2}, {0.0, 0.0, deck}});
-  h.bodies = {b};
-  return h;
+  return Prism(L, T, {0.0, B / 2, B / 2}, {0.0, 0.0, deck});
 }
-
-// Wedge: V sections of half-angle with half-breadth y = k z, keel on the baseline, to z = deck.
-hull::HullForm Wedge(double L, double k, double T, double deck) {
-  hull::HullForm h;
-  h.type = "monohull";
-  h.draught_m = T;
-  h.length_m = L;
-  hull::Demihull b;
-  b.role = "main";
-  for (int i = 0; i <= 20; ++i) b.stations.push_back({L * i / 20.0, {0.0, k * deck}, {0.0, deck}});
-  h.bodies = {b};
-  return h;
-}
+// Wedge: V sections with half-breadth y = k z, keel on the baseline, to z = deck.
+hull::HullForm Wedge(double L, double k, double T, double deck) { return Prism(L, T, {0.0, k * deck}, {0.0, deck}); }
 }  // namespace
 
 TEST_CASE("trimmed, sunk box: volume, LCB and LCF in closed form", "[attitude]") {
