@@ -39,19 +39,32 @@ void RunHull(const std::string& config, const std::string& out_dir) {
   } catch (const std::logic_error& e) {
     throw io::InputError(config + ": key 'hull': " + e.what());
   }
-  // The mass block as the motion commands read it (KG defaults to the draught), with the same checks.
+  // The mass block as the motion commands read it (KG defaults to the draught, LCG to the LCB), with the same
+  // checks; its LCG is the running attitude's pivot.
   std::vector<std::string> warnings;
+  hull::MassProperties m;
   {
     io::YamlMap mass = root.MapOrEmpty("mass");
-    const hull::MassProperties m = io::ParseMassConfig(mass, hs, &warnings);
+    m = io::ParseMassConfig(mass, hs, &warnings);
     hs = hull::ComputeHydrostatics(hull, water.rho_kg_m3, m.kg_m);
   }
   root.Finish();
-  PrepareOutputDir(out_dir, "hull", config, root.resolved());
-  for (const auto& w : warnings) std::cerr << "hullopt: warning: " << w << "\n";
   io::HydrostaticsReport rep;
   rep.warnings = warnings;
   rep.hs = hs;
+  rep.adjustments = hull.adjustments;
+  if (!hull_opts.attitude.IsEvenKeel()) {
+    rep.attitude = hull_opts.attitude;
+    rep.attitude.pivot_x_m = m.lcg_m_from_ap;
+    const hull::HullForm running = io::ApplyHullAttitude(hull_opts, hull, rep.attitude.pivot_x_m, config);
+    try {
+      rep.running = hull::ComputeHydrostatics(running, water.rho_kg_m3, m.kg_m);
+    } catch (const std::logic_error& e) {
+      throw io::InputError(config + ": key 'hull.attitude': " + e.what());
+    }
+  }
+  PrepareOutputDir(out_dir, "hull", config, root.resolved());
+  for (const auto& w : warnings) std::cerr << "hullopt: warning: " << w << "\n";
   rep.rho_kg_m3 = water.rho_kg_m3;
   rep.g_m_s2 = water.g_m_s2;
   if (has_speed) rep.speed_m_s = speed.MetresPerSecond(hs.L_m, water.g_m_s2);
@@ -67,6 +80,12 @@ void RunHull(const std::string& config, const std::string& out_dir) {
             << "  Cb " << hs.Cb << "  Cp " << hs.Cp << "  Cm " << hs.Cm << "  Cwp " << hs.Cwp << "  Cvp "
             << hs.Cvp << "  LCB " << hs.LCB_pct_L << " %L  LCF " << hs.LCF_pct_L << " %L";
   if (rep.speed_m_s) std::cout << "  Fr " << *rep.speed_m_s / std::sqrt(water.g_m_s2 * hs.L_m);
+  if (rep.running)
+    std::cout << "\n  running attitude (sinkage " << rep.attitude.sinkage_m << " m + down, trim "
+              << rep.attitude.trim_deg << " deg + bow up, at x = " << rep.attitude.pivot_x_m
+              << " m): displacement " << rep.running->displacement_t << " t, LCB " << rep.running->lcb_m_from_ap
+              << " m from AP, waterplane " << rep.running->awp_m2 << " m^2";
+  for (const auto& a : hull.adjustments) std::cout << "\n  adjusted: " << a;
   std::cout << "\n  wrote " << out_dir
             << "/{hydrostatics.json, offsets.csv, bodyplan.svg, config.resolved.yaml}\n";
 }

@@ -41,14 +41,8 @@ void RunRao(const std::string& config_file, const std::string& out_dir) {
   if (kernel_kind == "impulsive" && sc.sectional_force == "pressure")
     solver_map.Fail("sectional_force", "the impulsive stand-in kernel has the momentum form only (use kernel: "
                                        "transient_green)");
-  hull::Hydrostatics hs;
+  hull::Hydrostatics hs;  // at rest: L for Fn and the wavelengths, mass defaults
   try {
-    // Sections first: a section that does not reach the waterline is named with its body and station.
-    sk::StripGeometryOptions geo;
-    geo.sections = sc.sections;
-    geo.panels = sc.panels;
-    geo.layout = sc.Layout();
-    sk::StripKernelGeometry(hull, geo, 1.0, water.rho_kg_m3, water.g_m_s2);
     hs = hull::ComputeHydrostatics(hull, water.rho_kg_m3);
   } catch (const std::exception& e) {
     throw io::InputError("hull '" + hull_name + "': " + e.what());
@@ -56,6 +50,19 @@ void RunRao(const std::string& config_file, const std::string& out_dir) {
   auto mass_map = root.MapOrEmpty("mass");
   const hull::MassProperties mass = io::ParseMassConfig(mass_map, hs, &input_warnings);
   root.Finish();
+  // The strips see the hull at its running attitude (the hull itself at even keel).
+  const hull::HullForm running = io::ApplyHullAttitude(hull_opts, hull, mass.lcg_m_from_ap, config_file);
+  try {
+    // Sections first: a section that does not reach the waterline is named with its body and station.
+    sk::StripGeometryOptions geo;
+    geo.sections = sc.sections;
+    geo.panels = sc.panels;
+    geo.layout = sc.Layout();
+    sk::StripKernelGeometry(running, geo, 1.0, water.rho_kg_m3, water.g_m_s2);
+    hull::ComputeHydrostatics(running, water.rho_kg_m3);
+  } catch (const std::exception& e) {
+    throw io::InputError("hull '" + hull_name + "': " + e.what());
+  }
   const double U = speed.MetresPerSecond(hs.L_m, water.g_m_s2);
   const sk::StripKernelBuilder builder = kernel_kind == "impulsive"
                                              ? sk::StripKernelBuilder(sk::FillImpulsiveStripKernel)
@@ -64,7 +71,7 @@ void RunRao(const std::string& config_file, const std::string& out_dir) {
   const auto omega = sk::WaveFrequencies(sc.frequencies, U, water.g_m_s2, hs.L_m);
   sk::RaoTable t;
   try {
-    t = sk::ComputeRaos(hull, mass, U, water.rho_kg_m3, water.g_m_s2, omega, o, builder);
+    t = sk::ComputeRaos(running, mass, U, water.rho_kg_m3, water.g_m_s2, omega, o, builder);
   } catch (const std::domain_error& e) {
     throw io::InputError(std::string("cannot compute RAOs: ") + e.what());
   } catch (const std::invalid_argument& e) {
@@ -74,14 +81,19 @@ void RunRao(const std::string& config_file, const std::string& out_dir) {
   if (sc.method == "time_domain_strip")
     for (auto& w : sk::ValidityWarnings(U, hs.L_m, water.g_m_s2, t.omega_rad_s)) t.warnings.push_back(std::move(w));
   for (const auto& w : t.warnings) std::fprintf(stderr, "hullopt: warning: hull '%s': %s\n", hull_name.c_str(), w.c_str());
+  for (const auto& a : hull.adjustments) std::fprintf(stderr, "hullopt: note: hull '%s': %s\n", hull_name.c_str(), a.c_str());
   PrepareOutputDir(out_dir, "rao", config_file, root.resolved());
   std::ostringstream fn;
   fn << "speed U = " << U << " m/s (Fn " << U / std::sqrt(water.g_m_s2 * hs.L_m) << "), method " << sc.method
      << ", kernel " << kernel_kind << ", path " << sc.path << ", " << sc.sections << " sections x "
      << sc.panels << " panels, Cs = " << sc.cs << (sc.interaction ? "" : ", bodies without interaction")
      << (sc.sectional_force == "pressure" ? ", sectional force: pressure form" : "");
+  if (!hull_opts.attitude.IsEvenKeel())
+    fn << ", running attitude: sinkage " << hull_opts.attitude.sinkage_m << " m (+ down), trim "
+       << hull_opts.attitude.trim_deg << " deg (+ bow up) at x = " << mass.lcg_m_from_ap << " m";
   try {
     std::vector<std::string> header = {"hull: " + hull_name, fn.str()};
+    for (const auto& a : hull.adjustments) header.push_back("adjusted: " + a);
     for (const auto& w : t.warnings) header.push_back("warning: " + w);
     io::WriteRaoCsv(OutPath(out_dir, "rao.csv"), t, hs.L_m, header);
   } catch (const std::domain_error& e) {

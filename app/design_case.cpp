@@ -72,6 +72,7 @@ DesignCase LoadDesignCase(io::YamlMap& root, const std::string& config_file, con
   }
   io::YamlMap mass_map = root.MapOrEmpty("mass");
   d.mass = io::ParseMassConfig(mass_map, d.hydrostatics, &d.input_warnings);
+  d.running_hull = io::ApplyHullAttitude(hull_opts, d.hull, d.mass.lcg_m_from_ap, config_file);
   if (read_speed) d.speed_m_s = speed.MetresPerSecond(d.hydrostatics.L_m, d.water.g_m_s2);
   return d;
 }
@@ -82,7 +83,7 @@ sk::StripKernel BuildDesignKernel(const DesignCase& d) {
                          ": only the time-domain strip method has a frequency-independent strip kernel "
                          "(needed here); use method: time_domain_strip");
   return Guard(d, [&] {
-    return sk::BuildHullStripKernel(d.hull, SolverOptions(d, d.solver.cs), d.speed_m_s, d.water.rho_kg_m3,
+    return sk::BuildHullStripKernel(d.running_hull, SolverOptions(d, d.solver.cs), d.speed_m_s, d.water.rho_kg_m3,
                                     d.water.g_m_s2, sk::TransientGreenKernelBuilder(d.solver.Force()));
   });
 }
@@ -97,6 +98,8 @@ sk::RaoTable DesignRaosFromKernel(const DesignCase& d, const sk::StripKernel& ke
     for (const auto& w : sk::StripKernelWarnings(kernel)) t.warnings.push_back(w);
     for (const auto& w : sk::RaoResonanceWarnings(t)) t.warnings.push_back(w);
     AddValidityWarnings(d, &t);
+    // What the generator changed to build the hull goes with every result of it.
+    t.warnings.insert(t.warnings.begin(), d.hull.adjustments.begin(), d.hull.adjustments.end());
     return t;
   });
 }
@@ -105,10 +108,12 @@ sk::RaoTable ComputeDesignRaos(const DesignCase& d, const std::vector<double>& o
                                double cs_override) {
   const double cs = cs_override >= 0.0 ? cs_override : d.solver.cs;
   return Guard(d, [&] {
-    sk::RaoTable t = sk::ComputeRaos(d.hull, d.mass, d.speed_m_s, d.water.rho_kg_m3, d.water.g_m_s2, omega_rad_s,
+    sk::RaoTable t = sk::ComputeRaos(d.running_hull, d.mass, d.speed_m_s, d.water.rho_kg_m3, d.water.g_m_s2, omega_rad_s,
                                      SolverOptions(d, cs), sk::TransientGreenKernelBuilder(d.solver.Force()));
     t.warnings.insert(t.warnings.begin(), d.input_warnings.begin(), d.input_warnings.end());
     AddValidityWarnings(d, &t);
+    // What the generator changed to build the hull goes with every result of it.
+    t.warnings.insert(t.warnings.begin(), d.hull.adjustments.begin(), d.hull.adjustments.end());
     return t;
   });
 }

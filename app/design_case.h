@@ -19,8 +19,9 @@ namespace hullopt::app {
 
 struct DesignCase {
   std::string name;
-  hull::HullForm hull;
-  hull::Hydrostatics hydrostatics;
+  hull::HullForm hull;          ///< at rest, even keel: coefficients, mass defaults, Fr, passenger positions
+  hull::HullForm running_hull;  ///< at hull.attitude (= hull at even keel): strips and RAOs
+  hull::Hydrostatics hydrostatics;  ///< of `hull` (at rest)
   hull::MassProperties mass;
   /// Plausibility warnings of the hull and mass (parametric_hull/plausibility.h), carried into every RAO
   /// table computed for this design and so into every output.

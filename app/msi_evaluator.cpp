@@ -102,7 +102,7 @@ class MsiEvaluator : public opt::Evaluator {
   std::vector<std::string> QuantityNames() const override { return kQuantities; }
   std::vector<std::string> VariableNames() const override {
     return {"L_over_B", "B_over_T", "Cb", "Cp", "Cwp", "LCB_pct_L", "LCF_pct_L", "transom_immersion",
-            "transom_beam_ratio", "keel_rise", "spacing_over_L", "spacing_m", "strut_ratio",
+            "transom_beam_ratio", "keel_rise", "spacing_over_L", "spacing_m", "strut_ratio", "bulb_height_ratio",
             "outrigger_length_ratio", "outrigger_L_over_B", "outrigger_B_over_T", "outrigger_offset_over_L"};
   }
   // The YAML trees are copied per evaluation; the strip kernel itself runs OpenMP-parallel inside.

@@ -52,8 +52,11 @@ nlohmann::json PositionJson(const sk::PositionResult& r, double hs) {
 
 void WriteMsiCsv(const std::string& path, const std::vector<EvaluatedDesign>& designs) {
   std::ostringstream f;
-  f << "design,Hs_m,Tz_s,position,x_from_cg_m,rms_accel_g,msi_pct\n";
+  f << "design,Hs_m,Tz_s,position,x_from_cg_m,rms_accel_g,msi_pct,notes\n";
   for (const auto& d : designs) {
+    // The design's warnings and generator adjustments go on each of its rows, so no filtered copy loses them.
+    std::string notes;
+    for (const auto& w : d.rao.warnings) notes += (notes.empty() ? "" : "; ") + w;
     for (const auto& s : d.evaluation.seas) {
       auto row = [&](const sk::PositionResult& r) {
         for (double v : {s.sea.Hs_m, s.Tz_s, r.rms_accel_g, r.msi_pct})
@@ -61,7 +64,8 @@ void WriteMsiCsv(const std::string& path, const std::vector<EvaluatedDesign>& de
             throw InputError(path + ": design '" + d.name + "', position '" + r.position +
                              "': a non-finite acceleration or MSI; refusing to write it");
         f << CsvText(d.name) << ',' << Csv(s.sea.Hs_m) << ',' << Csv(s.Tz_s) << ',' << CsvText(r.position)
-          << ',' << Csv(r.x_from_cg_m) << ',' << Csv(r.rms_accel_g) << ',' << Csv(r.msi_pct) << '\n';
+          << ',' << Csv(r.x_from_cg_m) << ',' << Csv(r.rms_accel_g) << ',' << Csv(r.msi_pct) << ','
+          << CsvText(notes) << '\n';
       };
       for (const auto& r : s.positions) row(r);
       row(s.mean);

@@ -39,6 +39,7 @@ hull::DesignVariables ParseParametric(YamlMap& p, const WaterOptions& water) {
   d.keel_rise = p.Number("keel_rise", d.keel_rise);
   d.spacing_over_L = p.Number("spacing_over_L", d.spacing_over_L);
   d.strut_ratio = p.Number("strut_ratio", d.strut_ratio);
+  d.bulb_height_ratio = p.Number("bulb_height_ratio", d.bulb_height_ratio);
   d.outrigger_length_ratio = p.Number("outrigger_length_ratio", d.outrigger_length_ratio);
   d.outrigger_L_over_B = p.Number("outrigger_L_over_B", d.outrigger_L_over_B);
   d.outrigger_B_over_T = p.Number("outrigger_B_over_T", d.outrigger_B_over_T);
@@ -46,6 +47,9 @@ hull::DesignVariables ParseParametric(YamlMap& p, const WaterOptions& water) {
   d.freeboard_over_T = p.Number("freeboard_over_T", d.freeboard_over_T);
   d.stations = p.Integer("stations", d.stations);
   d.section_points = p.Integer("section_points", d.section_points);
+  d.on_infeasible = p.Choice("on_infeasible", {"refuse", "nearest"}, "refuse") == "nearest"
+                        ? hull::OnInfeasible::kNearest
+                        : hull::OnInfeasible::kRefuse;
   p.Finish();
   std::string error;
   if (!d.IsValid(&error)) {
@@ -56,6 +60,19 @@ hull::DesignVariables ParseParametric(YamlMap& p, const WaterOptions& water) {
     throw InputError(p.Where(p.Has("Cb") ? "Cb" : "type") + ": " + error);
   }
   return d;
+}
+
+hull::RunningAttitude ParseAttitude(YamlMap& h) {
+  hull::RunningAttitude a;
+  if (!h.Has("attitude")) return a;
+  YamlMap m = h.Map("attitude");
+  a.sinkage_m = m.Number("sinkage_m", 0.0);
+  a.trim_deg = m.Number("trim_deg", 0.0);
+  if (std::fabs(a.trim_deg) > hull::kMaxTrimDeg)
+    m.Fail("trim_deg", "|trim| must be <= " + std::to_string(int(hull::kMaxTrimDeg)) +
+                           " deg (+ bow up; stations stay vertical, a small-angle model)");
+  m.Finish();
+  return a;
 }
 
 }  // namespace
@@ -99,6 +116,7 @@ HullOptions ParseHullConfig(YamlMap& root, const WaterOptions& water) {
       h.Fail("hulls", "must be " + std::to_string(expected) + " for a " + hull::ToString(o.design.type) +
                           " (trihull outriggers are not counted)");
     o.hulls = hulls;
+    o.attitude = ParseAttitude(h);
     h.Finish();
     return o;
   }
@@ -120,6 +138,7 @@ HullOptions ParseHullConfig(YamlMap& root, const WaterOptions& water) {
   for (const char* k : {"draught_m", "spacing_m", "length_m"})
     if (h.Has(k) && std::fabs(h.Number(k)) > kMaxCoordinate_m)
       h.Fail(k, "is not a hull dimension (at most " + std::to_string(int(kMaxCoordinate_m)) + " m)");
+  o.attitude = ParseAttitude(h);
   h.Finish();
   return o;
 }
@@ -155,6 +174,17 @@ hull::HullForm LoadHull(const HullOptions& o, const std::string& config_file, st
   if (o.stations > 0 && o.source == HullOptions::Source::kOffsetsCsv) h = hull::Resample(h, o.stations);
   keep(CheckHull(h, o.file));
   return h;
+}
+
+hull::HullForm ApplyHullAttitude(const HullOptions& o, const hull::HullForm& at_rest, double pivot_x_m,
+                                 const std::string& config_file) {
+  hull::RunningAttitude a = o.attitude;
+  a.pivot_x_m = pivot_x_m;
+  try {
+    return hull::ApplyRunningAttitude(at_rest, a);
+  } catch (const std::logic_error& e) {  // invalid_argument and domain_error
+    throw InputError(config_file + ": key 'hull.attitude': " + e.what());
+  }
 }
 
 }  // namespace hullopt::io

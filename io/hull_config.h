@@ -10,6 +10,8 @@
 //     spacing_m: 0.70        # demihull centreline spacing (needed when hulls = 2)
 //     stations: 0            # resample to this many equally spaced stations (0 = keep the file's; STL: 41)
 //     length_m: 0            # waterline length L for coefficients (0 = span of the wetted stations)
+//   either source may add the steady running attitude (default even keel; parametric_hull/running_attitude.h):
+//     attitude: { sinkage_m: 0.0, trim_deg: 0.0 }   # sinkage + down at the CG, trim + bow up
 // File paths are relative to the working directory.
 #include <string>
 #include <vector>
@@ -18,6 +20,7 @@
 #include "io/yaml_map.h"
 #include "parametric_hull/design_variables.h"
 #include "parametric_hull/hull_form.h"
+#include "parametric_hull/running_attitude.h"
 
 namespace hullopt::io {
 
@@ -31,6 +34,8 @@ struct HullOptions {
   double spacing_m = 0.0;        ///< [m] demihull centreline spacing (file sources with hulls = 2)
   int stations = 0;              ///< resample to this many stations (0 = as read)
   double length_m = 0.0;         ///< [m] waterline length override for file sources (0 = from the stations)
+  /// Running attitude (sinkage, trim; the pivot is set by ApplyHullAttitude). Even keel by default.
+  hull::RunningAttitude attitude;
   bool IsValid(std::string* error) const;
 };
 
@@ -45,5 +50,11 @@ HullOptions ParseHullConfig(YamlMap& root, const WaterOptions& water);
 /// appended to *warnings.
 hull::HullForm LoadHull(const HullOptions& options, const std::string& config_file,
                         std::vector<std::string>* warnings = nullptr);
+
+/// The hull at options.attitude about pivot_x_m [m from AP] (the centre of gravity): hydrostatics, strips and
+/// RAOs of a running hull use this one, the mass and the form coefficients the hull at rest. Even keel returns
+/// at_rest unchanged. A refused attitude becomes InputError "CONFIG: key 'hull.attitude': <rule>".
+hull::HullForm ApplyHullAttitude(const HullOptions& options, const hull::HullForm& at_rest, double pivot_x_m,
+                                 const std::string& config_file);
 
 }  // namespace hullopt::io

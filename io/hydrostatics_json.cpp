@@ -65,6 +65,30 @@ void WriteHydrostaticsJson(const std::string& path, const hull::HullForm& hull, 
   j["wetted_surface_m2"] = h.wetted_surface_m2;
   j["heave_stiffness_N_per_m"] = r.rho_kg_m3 * r.g_m_s2 * h.awp_m2;
   if (!r.warnings.empty()) j["warnings"] = r.warnings;
+  j["adjustments"] = r.adjustments;
+  if (r.running) {
+    const hull::Hydrostatics& a = *r.running;
+    nlohmann::ordered_json ra;
+    ra["conventions"] =
+        "hull at its steady running attitude: sinkage + down at pivot_x_m, trim + bow up; the waterline cuts the "
+        "trimmed hull, x and z in the hull's own axes; the quantities above are at rest, even keel";
+    ra["sinkage_m"] = r.attitude.sinkage_m;
+    ra["trim_deg"] = r.attitude.trim_deg;
+    ra["pivot_x_m"] = r.attitude.pivot_x_m;
+    ra["volume_m3"] = a.volume_m3;
+    ra["displacement_kg"] = a.displacement_kg;
+    ra["displacement_t"] = a.displacement_t;
+    ra["buoyancy_over_rest"] = h.volume_m3 > 0.0 ? a.volume_m3 / h.volume_m3 : 0.0;
+    ra["lcb_m_from_ap"] = a.lcb_m_from_ap;
+    ra["vcb_m"] = a.vcb_m;
+    ra["awp_m2"] = a.awp_m2;
+    ra["lcf_m_from_ap"] = a.lcf_m_from_ap;
+    ra["i_l_m4"] = a.i_l_m4;
+    ra["wetted_surface_m2"] = a.wetted_surface_m2;
+    ra["wetted_x_aft_m"] = a.x_ap_m;
+    ra["heave_stiffness_N_per_m"] = r.rho_kg_m3 * r.g_m_s2 * a.awp_m2;
+    j["running_attitude"] = ra;
+  }
   RequireFiniteJson(j, path);
   WriteFileAtomically(path, j.dump(2) + "\n");
 }

@@ -9,6 +9,7 @@
 
 #include "parametric_hull/hull_form.h"
 #include "parametric_hull/hydrostatics.h"
+#include "parametric_hull/running_attitude.h"
 
 namespace hullopt::io {
 
@@ -18,6 +19,13 @@ struct HydrostaticsReport {
   double g_m_s2 = 9.81;
   std::optional<double> speed_m_s;  ///< [m/s]; Fr is written as null without it
   std::vector<std::string> warnings;  ///< plausibility warnings, written as "warnings"
+  /// Hydrostatics of the hull at its running attitude (written as "running_attitude" with the attitude),
+  /// absent at even keel.
+  std::optional<hull::Hydrostatics> running;
+  hull::RunningAttitude attitude;
+  /// What the generator changed from the config to build the hull (on_infeasible: nearest), one line each;
+  /// written as "adjustments" (an empty list when nothing was changed).
+  std::vector<std::string> adjustments;
 };
 
 /// Writes the JSON file; throws InputError if it cannot be written.

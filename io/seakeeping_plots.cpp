@@ -20,11 +20,18 @@ std::string SeaLabel(const sk::SeaEvaluation& s) {
   return "Hs " + Fmt(s.sea.Hs_m) + " m, Tz " + Fmt(s.Tz_s, "%.3g") + " s";
 }
 
-// Legend label: the design's name, numbered by its place in the list unless the name carries its own number
-// (the study's "12_TRIa": hull 11 is not evaluated, so list places and hull numbers differ).
+// A design's number: the one its name starts with (the study's "12_TRIa"), else its place in the list. Every
+// plot uses it, so a design keeps its number when others before it are left out.
+int DesignNumber(size_t i, const EvaluatedDesign& d) {
+  size_t n = 0;
+  while (n < d.name.size() && n < 6 && std::isdigit(static_cast<unsigned char>(d.name[n]))) ++n;
+  return n > 0 ? std::stoi(d.name.substr(0, n)) : static_cast<int>(i + 1);
+}
+
+// Legend label: the design's name, prefixed by its number unless the name carries it.
 std::string Numbered(size_t i, const EvaluatedDesign& d) {
   if (!d.name.empty() && std::isdigit(static_cast<unsigned char>(d.name[0]))) return d.name;
-  return std::to_string(i + 1) + " " + d.name;
+  return std::to_string(DesignNumber(i, d)) + " " + d.name;
 }
 
 // Groups in order of first appearance.
@@ -130,9 +137,9 @@ PlotFigure AccelerationPerMetreFigure(const std::vector<EvaluatedDesign>& design
       const auto& d = designs[i];
       if (d.group != group || sea >= d.evaluation.seas.size()) continue;
       const auto& s = d.evaluation.seas[sea];
-      x.push_back(static_cast<double>(i + 1));
+      x.push_back(static_cast<double>(DesignNumber(i, d)));
       for (int k = 0; k < 3; ++k) y[k].push_back(s.positions[k].rms_accel_g / s.sea.Hs_m);
-      p.x_ticks.push_back(static_cast<double>(i + 1));
+      p.x_ticks.push_back(x.back());
     }
     if (!x.empty()) p.x_min = x.front() - 0.5, p.x_max = x.back() + 0.5;
     for (int k = 0; k < 3; ++k) {
@@ -209,7 +216,7 @@ PlotFigure MsiVsParameterFigure(const std::vector<EvaluatedDesign>& designs, con
       if (d.group != group || it == d.parameters.end() || sea >= d.evaluation.seas.size()) continue;
       x.push_back(it->second);
       y.push_back(d.evaluation.seas[sea].mean.msi_pct);
-      labels.push_back(std::to_string(i + 1));
+      labels.push_back(std::to_string(DesignNumber(i, d)));
     }
     if (x.empty()) continue;
     auto s = PlotSeries::Markers(group.empty() ? "designs" : group, x, y);

@@ -82,6 +82,7 @@ bool DesignVariables::IsValid(std::string* error) const {
       Check(fin(spacing_over_L) && spacing_over_L > 0, "spacing_over_L", spacing_over_L, "must be > 0", error) &&
       Check(fin(spacing_m) && spacing_m >= 0, "spacing_m", spacing_m, "must be >= 0 (0 = use spacing_over_L)", error) &&
       Check(fin(strut_ratio) && strut_ratio >= 0 && strut_ratio <= 1, "strut_ratio", strut_ratio, "must lie in [0, 1] (0 = automatic)", error) &&
+      Check(fin(bulb_height_ratio) && bulb_height_ratio >= 0 && bulb_height_ratio < 1, "bulb_height_ratio", bulb_height_ratio, "must lie in [0, 1) (0 = elliptic bulb scaled to the ends)", error) &&
       Check(fin(outrigger_length_ratio) && outrigger_length_ratio > 0.1 && outrigger_length_ratio <= 1, "outrigger_length_ratio", outrigger_length_ratio, "must lie in (0.1, 1]", error) &&
       Check(fin(outrigger_L_over_B) && outrigger_L_over_B > 2, "outrigger_L_over_B", outrigger_L_over_B, "must be > 2", error) &&
       Check(fin(outrigger_B_over_T) && outrigger_B_over_T > 0, "outrigger_B_over_T", outrigger_B_over_T, "must be > 0", error) &&

@@ -22,6 +22,11 @@ std::string ToString(HullType type);
 SectionStyle ParseSectionStyle(const std::string& name);
 std::string ToString(SectionStyle style);
 
+/// What the generator does with a waterplane (Cwp, LCF) its family of curves cannot meet: refuse (default;
+/// the message offers the nearest feasible combination) or build that nearest combination and record the
+/// change in HullForm::adjustments.
+enum class OnInfeasible { kRefuse, kNearest };
+
 struct DesignVariables {
   HullType type = HullType::kCatamaran;
   SectionStyle section_style = SectionStyle::kRoundBilge;  ///< must be kSwathBulb for a SWATH and only then
@@ -48,6 +53,12 @@ struct DesignVariables {
   /// SWATH strut: maximum waterline breadth / B, in (0, 1] (1: the strut is as wide as the bulb where the
   /// waterplane peaks). 0 = choose Cwp / 0.8 (strut waterline fullness 0.8).
   double strut_ratio = 0.0;
+  /// SWATH bulb height at midships / T, in [0, 1). 0 = the elliptic bulb of breadth B whose height the
+  /// midship area sets, scaled in breadth and height together towards the ends (it can flatten into a thin
+  /// plate). > 0 = the rounded-bulb family: the bulb keeps this height to the ends and narrows to meet the
+  /// sectional area (its fullness, a superelliptic exponent, is solved at midships for Cm), with a
+  /// flat-bottomed, chined run over the aft kSwathChineFraction of L.
+  double bulb_height_ratio = 0.0;
   /// Trihull outriggers (each): length / L (they end at the transom), L/B, B/T and centreline offset from the
   /// ship centreline / L.
   double outrigger_length_ratio = 0.6;
@@ -57,6 +68,7 @@ struct DesignVariables {
   double freeboard_over_T = 0.6;  ///< deck edge height above the waterline / T (plots only; no hydrostatics)
   int stations = 41;              ///< stations per body (odd, so midships is a station), >= 11
   int section_points = 25;        ///< points per section contour below the waterline, >= 8
+  OnInfeasible on_infeasible = OnInfeasible::kRefuse;
 
   /// Checks ranges one by one; on failure writes "<name> = <value>: <rule>" and returns false.
   bool IsValid(std::string* error) const;

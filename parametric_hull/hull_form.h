@@ -33,6 +33,9 @@ struct HullForm {
   std::vector<Demihull> bodies;  ///< first body is the main hull / the demihull
   double draught_m = 0.0;        ///< [m] design waterline height above the baseline
   double length_m = 0.0;         ///< [m] waterline length L of the main body, AP to FP
+  /// What the generator changed from the requested design variables to build this hull, one line each
+  /// ("LCF_pct_L -12.5 -> -6.25 (+6.25 % L): ..."); empty for a hull built as asked. Every output shows them.
+  std::vector<std::string> adjustments;
   /// Number of physical bodies counting mirror pairs twice (1 monohull, 2 catamaran, 3 trihull).
   int BodyCount() const {
     int n = 0;

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
+#include <string>
+#include <vector>
 
 #include "parametric_hull/form_curve.h"
 #include "parametric_hull/hydrostatics.h"
@@ -28,6 +30,13 @@ constexpr double kOutriggerCp = 0.65, kOutriggerCm = 0.75, kOutriggerCwp = 0.78,
                  kOutriggerLcf = -4.0, kOutriggerTransom = 0.3, kOutriggerTransomBeam = 0.5;
 // SWATH: strut waterline fullness used when strut_ratio is 0 (automatic), and bulb superellipse exponent.
 constexpr double kAutoStrutFullness = 0.8, kBulbExponent = 2.0;
+// Rounded-bulb SWATH family (bulb_height_ratio > 0): range of the bulb's superelliptic exponent solved at
+// midships (1.5: a pointed, diamond-like bulb; 12: nearly a box); the aft fraction of L over which the
+// bulb's bottom flattens into a chined, flat-bottomed transom (the paper's SW1/SW2: "a flat bottomed transom
+// preceded by a chine extending for 30% of the length"), and the bottom exponent at the transom (a flat
+// bottom with a tight bilge radius).
+constexpr double kBulbExponentMin = 1.5, kBulbExponentMax = 12.0;
+constexpr double kSwathChineFraction = 0.3, kChineExponent = 8.0;
 
 std::string Num(double v) {
   std::ostringstream s;
@@ -69,6 +78,7 @@ struct BodySpec {
   double deck_z = 1.6;
   double Cp = 0.6, Cm = 0.8, Cwp = 0.7, LCB = 0, LCF = 0;
   double transom_immersion = 0.3, transom_beam = 0.6, keel_rise = 0.3, strut_ratio = 0.5;
+  double bulb_height_ratio = 0.0;
   int stations = 41, points = 25;
   std::string name = "hull";
 };
@@ -82,6 +92,54 @@ struct CurveCache {
   Demihull body;
   double V = 0, Vx = 0, Awp = 0, Awpx = 0, Amid = 0;
 };
+
+// Area coefficients the round-bilge (superellipse) family reaches at full draught (section_family.h).
+constexpr double kRoundBilgeSigmaMin = 0.15, kRoundBilgeSigmaMax = 0.98;
+
+// The rounded-bulb family where no bulb stands out of the strut: a round-bilge section of the strut's
+// breadth (the paper's "well rounded" sections) whose draught follows the monohull rule d = min(T,
+// A/(σ_ref b)) (keel rise towards the ends, a flat-bottomed rounded-bilge transom), chined only if fuller
+// than the round-bilge family reaches.
+Station StrutFoot(SectionTarget t, double T, double sigma_ref) {
+  t.draught_m = std::min(T, t.area_m2 / (std::min(sigma_ref, kRoundBilgeSigmaMax) * 2 * t.half_beam_m));
+  const double sigma = t.area_m2 / (2 * t.half_beam_m * t.draught_m);
+  if (sigma > kRoundBilgeSigmaMax) return HardChineSection(t);
+  if (sigma < kRoundBilgeSigmaMin) t.draught_m = t.area_m2 / (0.25 * kPi * 2 * t.half_beam_m);
+  return RoundBilgeSection(t);
+}
+
+// A station of the rounded-bulb SWATH family: the bulb keeps the midship height h and fullness nb and narrows
+// to meet the area (down to the strut's own thickness, below which the section is a strut foot); where the
+// area exceeds the midship bulb's, the bulb grows in height at breadth B. Aft of kSwathChineFraction L the
+// bulb's bottom flattens towards the transom (exponent rising to kChineExponent).
+Station RoundedBulbStation(SectionTarget t, const BodySpec& b, double xi, double h, double nb, double sac_peak) {
+  const double f = std::max(0.0, 1.0 - xi / kSwathChineFraction);
+  const double nb_low = nb + f * std::max(0.0, kChineExponent - nb);
+  const auto area = [&](double e, double hh) {
+    return SectionArea(SwathSection(t, e, hh, nb, nb_low), t.waterline_z_m);
+  };
+  const double st = t.half_beam_m;
+  if (st >= b.B / 2 || t.area_m2 <= area(st, h))
+    return StrutFoot(t, b.T, b.Cm + b.keel_rise * (1.0 - b.Cm) * (2 * xi - 1) * (2 * xi - 1));
+  if (t.area_m2 <= area(b.B / 2, h)) {
+    const double e = IncreasingRoot([&](double m) { return area(m, h) / t.area_m2 - 1.0; }, st, b.B / 2, kAreaTol);
+    return SwathSection(t, e, h, nb, nb_low);
+  }
+  if (t.area_m2 > area(b.B / 2, b.T)) {
+    // Fuller than the midship bulb filling the draught: a fuller bulb (larger exponent) of breadth B and
+    // full height.
+    const auto full = [&](double n) { return SectionArea(SwathSection(t, b.B / 2, b.T, n, std::max(n, nb_low)), t.waterline_z_m); };
+    if (t.area_m2 > full(kBulbExponentMax))
+      throw std::domain_error(
+          "impossible SWATH: section at x = " + Num(t.x_m) + " m needs area " + Num(t.area_m2) +
+          " m^2, more than a bulb of breadth B filling the draught (the sectional area curve peaks at " +
+          Num(sac_peak) + " x midships; move LCB_pct_L towards 0 or lower Cp)");
+    const double n = IncreasingRoot([&](double m) { return full(m) / t.area_m2 - 1.0; }, nb, kBulbExponentMax, kAreaTol);
+    return SwathSection(t, b.B / 2, b.T, n, std::max(n, nb_low));
+  }
+  const double hh = IncreasingRoot([&](double m) { return area(b.B / 2, m) / t.area_m2 - 1.0; }, h, b.T, kAreaTol);
+  return SwathSection(t, b.B / 2, hh, nb, nb_low);
+}
 
 Demihull BuildBody(const BodySpec& b, CurveCache* cache) {
   const bool swath = b.style == SectionStyle::kSwathBulb;
@@ -131,7 +189,9 @@ Demihull BuildBody(const BodySpec& b, CurveCache* cache) {
   auto swath_area = [&](SectionTarget t, double e, double h) {
     return SectionArea(SwathSection(t, e, h, kBulbExponent), t.waterline_z_m);
   };
-  if (swath) {
+  // Rounded-bulb family: the bulb height is the design variable, its fullness (exponent) meets Cm.
+  const bool rounded = swath && b.bulb_height_ratio > 0.0;
+  if (swath && !rounded) {
     SectionTarget t = base;
     t.half_beam_m = wp(0.5) * b.B / 2;
     t.draught_m = b.T;
@@ -143,6 +203,32 @@ Demihull BuildBody(const BodySpec& b, CurveCache* cache) {
           " (bulb filling the draught) for B/T = " + Num(b.B / b.T) + " and strut_ratio = " + Num(peak));
     bulb_h_mid = IncreasingRoot([&](double h) { return swath_area(t, b.B / 2, h) / Am - 1.0; }, 1e-6 * b.T,
                                 b.T, kAreaTol);
+  }
+  double nb_mid = kBulbExponent;
+  const auto bulb_area = [&](SectionTarget t, double e, double h, double nb, double nb_low) {
+    return SectionArea(SwathSection(t, e, h, nb, nb_low), t.waterline_z_m);
+  };
+  if (rounded) {
+    SectionTarget t = base;
+    t.half_beam_m = wp(0.5) * b.B / 2;
+    t.draught_m = b.T;
+    const double h = b.bulb_height_ratio * b.T;
+    bulb_h_mid = h;
+    // A strut as wide as the bulb at midships (a semi-SWATH whose waterplane reduction lies forward): the
+    // midship section is a round-bilge strut foot and the bulb, where it stands out forward, is elliptic.
+    const bool midship_bulb = t.half_beam_m < b.B / 2 && Am > bulb_area(t, t.half_beam_m, h, kBulbExponent, 0.0);
+    const double lo = bulb_area(t, b.B / 2, h, kBulbExponentMin, 0.0),
+                 hi = bulb_area(t, b.B / 2, h, kBulbExponentMax, 0.0);
+    if (midship_bulb && !(Am > lo && Am < hi))
+      throw std::domain_error("impossible SWATH: midship area coefficient Cm = Cb/Cp = " + Num(b.Cm) +
+                              " needs a bulb of height bulb_height_ratio = " + Num(b.bulb_height_ratio) +
+                              " T and breadth B between " + Num(lo / (b.B * b.T)) + " (pointed) and " +
+                              Num(hi / (b.B * b.T)) + " (box) with strut_ratio = " + Num(peak) +
+                              " (rule: raise bulb_height_ratio for a fuller midship section, lower it for a "
+                              "finer one)");
+    if (midship_bulb)
+      nb_mid = IncreasingRoot([&](double n) { return bulb_area(t, b.B / 2, h, n, 0.0) / Am - 1.0; },
+                              kBulbExponentMin, kBulbExponentMax, kAreaTol);
   }
 
   Demihull body;
@@ -172,6 +258,10 @@ Demihull BuildBody(const BodySpec& b, CurveCache* cache) {
     if (t.area_m2 <= 0.0 || t.half_beam_m <= 0.0) {
       t.draught_m = br > 0.0 ? std::min(b.T, ar / (0.25 * kPi * 2 * br)) : 0.0;
       body.stations.push_back(RoundBilgeSection(t));
+      continue;
+    }
+    if (rounded) {
+      body.stations.push_back(RoundedBulbStation(t, b, xi, bulb_h_mid, nb_mid, sac.peak));
       continue;
     }
     const double lam_min = 1e-3;
@@ -250,6 +340,7 @@ HullForm Build(const DesignVariables& dv, double L, double Cm, const Targets& tg
   m.transom_beam = dv.transom_beam_ratio;
   m.keel_rise = dv.keel_rise;
   m.strut_ratio = dv.strut_ratio > 0.0 ? dv.strut_ratio : dv.Cwp / kAutoStrutFullness;
+  m.bulb_height_ratio = dv.bulb_height_ratio;
   m.stations = dv.stations;
   m.points = dv.section_points;
   if (dv.type == HullType::kSwath && !(m.strut_ratio <= 1.0))
@@ -347,11 +438,136 @@ void Scale(HullForm* h, double s) {
   }
 }
 
+// Nearest feasible waterplane: LCF is moved inside the family's reach by the first of these margins [% L]
+// with which the whole hull builds (the re-targeting passes shift the curve targets by the discretisation
+// error of the hull, up to a few 0.1 % L for a full waterplane), Cwp by the first of them / 100.
+constexpr double kFeasibleMarginsPct[] = {0.05, 0.1, 0.2, 0.4, 0.8, 1.6};
+// Scan steps towards feasibility (LCF [% L], Cwp) before the bisection, and the bisection's resolution.
+constexpr double kLcfScanStep = 0.25, kCwpScanStep = 0.01, kBisectTol = 1e-3;
+
+bool WaterplaneFits(double peak, double end, double cwp, double lcf) {
+  try {
+    SolveFormCurveWithPeak(peak, end, cwp, 0.5 + lcf / 100.0, "waterplane");
+    return true;
+  } catch (const std::domain_error&) {
+    return false;
+  }
+}
+
+// Boundary of a feasible set between an infeasible `bad` and a feasible `good` value, by bisection; returns
+// a value on the feasible side.
+template <class Fits>
+double Bisect(Fits fits, double bad, double good) {
+  while (std::fabs(good - bad) > kBisectTol) {
+    const double m = 0.5 * (bad + good);
+    (fits(m) ? good : bad) = m;
+  }
+  return good;
+}
+
+// The nearest waterplane the family reaches from (Cwp, LCF): LCF moved towards midships at the same Cwp, and
+// Cwp lowered at the same LCF (NaN where the scan finds none).
+struct NearestWaterplane {
+  double lcf_pct_L = NAN;  // with Cwp kept
+  double cwp = NAN;        // with LCF kept
+};
+NearestWaterplane FindNearestWaterplane(double peak, double end, double cwp, double lcf) {
+  NearestWaterplane n;
+  const double dir = lcf < 0.0 ? 1.0 : -1.0;  // towards midships, then beyond
+  for (double l = lcf + dir * kLcfScanStep; std::fabs(l) < 25.0; l += dir * kLcfScanStep)
+    if (WaterplaneFits(peak, end, cwp, l)) {
+      const double b = Bisect([&](double v) { return WaterplaneFits(peak, end, cwp, v); }, l - dir * kLcfScanStep, l);
+      n.lcf_pct_L = b;
+      break;
+    }
+  for (double c = cwp - kCwpScanStep; c > 0.05; c -= kCwpScanStep)
+    if (WaterplaneFits(peak, end, c, lcf)) {
+      n.cwp = Bisect([&](double v) { return WaterplaneFits(peak, end, v, lcf); }, c + kCwpScanStep, c);
+      n.cwp -= kFeasibleMarginsPct[0] / 100.0;
+      break;
+    }
+  return n;
+}
+
+// Is the waterplane (Cwp, LCF) of a monohull, catamaran or SWATH beyond the curve family? (peak, end: the
+// curve's peak and transom breadths / B). The trihull's main-hull waterplane is derived from the totals and is
+// checked in the build.
+bool WaterplaneInfeasible(const DesignVariables& dv, double* peak, double* end) {
+  if (dv.type == HullType::kTrihull) return false;
+  *peak = dv.type == HullType::kSwath ? (dv.strut_ratio > 0.0 ? dv.strut_ratio : dv.Cwp / kAutoStrutFullness)
+                                      : 1.0;
+  *end = dv.transom_beam_ratio * *peak;
+  if (!(dv.Cwp < *peak)) return false;  // refused in the build with its own rule
+  return !WaterplaneFits(*peak, *end, dv.Cwp, dv.LCF_pct_L);
+}
+
+HullForm GenerateFeasible(const DesignVariables& dv);
+
 }  // namespace
 
 HullForm GenerateHull(const DesignVariables& dv) {
   std::string error;
   if (!dv.IsValid(&error)) throw std::invalid_argument(error);
+  double peak = 1.0, end = 0.0;
+  if (!WaterplaneInfeasible(dv, &peak, &end)) {
+    try {
+      return GenerateFeasible(dv);
+    } catch (const std::domain_error& e) {
+      // Reachable as asked, but not once the re-targeting has added the hull's discretisation error: as
+      // unreachable (below), unless the failure is not the waterplane's.
+      if (dv.type == HullType::kTrihull || std::string(e.what()).find("waterplane curve") == std::string::npos)
+        throw;
+    }
+  }
+  // An unreachable waterplane: refused with the nearest reachable ones named, or (on_infeasible: nearest)
+  // built with Cwp kept and LCF moved, the change recorded.
+  const NearestWaterplane n = FindNearestWaterplane(peak, end, dv.Cwp, dv.LCF_pct_L);
+  std::ostringstream what;
+  what << "waterplane Cwp = " << dv.Cwp << " with LCF_pct_L = " << dv.LCF_pct_L
+       << " is beyond the fair-curve family (rule: a waterplane this full cannot have its centroid that far "
+          "from midships; peak breadth "
+       << peak << " B, transom breadth " << end << " B; necessary bound for any curve no wider than its peak: "
+       << "LCF_pct_L >= " << (dv.Cwp / peak / 2 - 0.5) * 100 << ")";
+  // The nearest LCF with which the whole hull builds.
+  DesignVariables moved = dv;
+  HullForm hull;
+  bool built = false;
+  std::string last_error;
+  if (std::isfinite(n.lcf_pct_L)) {
+    const double dir = dv.LCF_pct_L < 0.0 ? 1.0 : -1.0;
+    for (double margin : kFeasibleMarginsPct) {
+      moved.LCF_pct_L = n.lcf_pct_L + dir * margin;
+      try {
+        hull = GenerateFeasible(moved);
+        built = true;
+        break;
+      } catch (const std::domain_error& e) {
+        last_error = e.what();
+      }
+    }
+  }
+  if (dv.on_infeasible == OnInfeasible::kRefuse || !built) {
+    std::ostringstream os;
+    os << what.str() << "; nearest feasible: ";
+    if (built) os << "LCF_pct_L = " << Num(moved.LCF_pct_L) << " (Cwp kept)";
+    if (built && std::isfinite(n.cwp)) os << " or ";
+    if (std::isfinite(n.cwp)) os << "Cwp = " << Num(n.cwp) << " (LCF kept)";
+    if (!built && !std::isfinite(n.cwp)) os << "none found";
+    if (built) os << "; on_infeasible: nearest builds the first";
+    if (!built && !last_error.empty()) os << " (with LCF moved: " << last_error << ")";
+    throw std::domain_error(os.str());
+  }
+  std::ostringstream adj;
+  adj << "on_infeasible: nearest: LCF_pct_L " << dv.LCF_pct_L << " -> " << Num(moved.LCF_pct_L) << " ("
+      << (moved.LCF_pct_L - dv.LCF_pct_L >= 0 ? "+" : "") << Num(moved.LCF_pct_L - dv.LCF_pct_L) << " % L), Cwp "
+      << dv.Cwp << " kept: the " << what.str();
+  hull.adjustments.push_back(adj.str());
+  return hull;
+}
+
+namespace {
+
+HullForm GenerateFeasible(const DesignVariables& dv) {
   const double V = dv.displacement_t * 1000.0 / dv.rho_kg_m3;
   const int n_ref = (dv.type == HullType::kCatamaran || dv.type == HullType::kSwath) ? 2 : 1;
   // Nominal length from Cb at the requested L/B, B/T; the final scaling makes the displacement exact.
@@ -375,5 +591,7 @@ HullForm GenerateHull(const DesignVariables& dv) {
   Scale(&hull, std::cbrt(V / v));
   return hull;
 }
+
+}  // namespace
 
 }  // namespace hullopt::hull

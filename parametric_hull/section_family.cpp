@@ -147,7 +147,8 @@ Station HardChineSection(const SectionTarget& t) {
   return s;
 }
 
-Station SwathSection(const SectionTarget& t, double e, double h, double nb) {
+Station SwathSection(const SectionTarget& t, double e, double h, double nb, double nb_lower) {
+  if (!(nb_lower > 0.0)) nb_lower = nb;
   Station s;
   s.x_m = t.x_m;
   const double keel = t.waterline_z_m - t.draught_m;
@@ -157,13 +158,15 @@ Station SwathSection(const SectionTarget& t, double e, double h, double nb) {
   // Powers of the superellipse; the default elliptic bulb (nb = 2) needs none (this is the hot loop of SWATH
   // generation).
   const bool ellipse = nb == 2.0;
+  const bool ellipse_lower = nb_lower == 2.0;
   const auto pw = [&](double v, double ex) { return ellipse && ex == 1.0 ? v : std::pow(v, ex); };
+  const auto pwl = [&](double v, double ex) { return ellipse_lower && ex == 1.0 ? v : std::pow(v, ex); };
   // Lower half of the bulb: superellipse quadrant from the keel to the widest point.
   for (int j = 0; j < m; ++j) {
     const double th = 0.5 * kPi * j / (m - 1);
     const double sn = j == m - 1 ? 1.0 : std::sin(th), cs = j == m - 1 ? 0.0 : std::cos(th);
-    s.y_m.push_back(ew * pw(sn, 2.0 / nb));
-    s.z_m.push_back(keel + 0.5 * h * (1.0 - pw(cs, 2.0 / nb)));
+    s.y_m.push_back(ew * pwl(sn, 2.0 / nb_lower));
+    s.z_m.push_back(keel + 0.5 * h * (1.0 - pwl(cs, 2.0 / nb_lower)));
   }
   // Upper half of the bulb back in to the strut: y = ew (1 - w^nb)^(1/nb), w = (z - zc)/(h/2) from 0 to w_j.
   const double zc = keel + 0.5 * h;

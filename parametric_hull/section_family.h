@@ -32,8 +32,11 @@ Station HardChineSection(const SectionTarget& t);
 /// the keel (z = waterline_z_m - draught_m), joined to a strut of half-thickness t.half_beam_m that rises
 /// wall-sided through the waterline to the deck. If the strut is as wide as the bulb, the bulb's upper half
 /// is replaced by the strut. t.area_m2 is ignored (the caller solves bulb size for area with SectionArea()).
+/// bulb_exponent_lower shapes the bulb's lower half (its bottom; a large exponent gives a flat bottom with a
+/// tight bilge, the chined run of a SWATH), bulb_exponent its upper half (and the lower half when
+/// bulb_exponent_lower is 0).
 Station SwathSection(const SectionTarget& t, double bulb_half_width_m, double bulb_height_m,
-                     double bulb_exponent);
+                     double bulb_exponent, double bulb_exponent_lower = 0.0);
 
 /// Full (both sides) area below waterline_z_m of a contour, the same polyline rule as the hydrostatics.
 double SectionArea(const Station& s, double waterline_z_m);

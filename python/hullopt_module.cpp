@@ -168,6 +168,8 @@ PYBIND11_MODULE(_hullopt, m) {
       .def_readwrite("spacing_over_L", &hull::DesignVariables::spacing_over_L)
       .def_readwrite("spacing_m", &hull::DesignVariables::spacing_m, "[m] wins over spacing_over_L if > 0")
       .def_readwrite("strut_ratio", &hull::DesignVariables::strut_ratio)
+      .def_readwrite("bulb_height_ratio", &hull::DesignVariables::bulb_height_ratio,
+                     "SWATH bulb height at midships / T (0: elliptic bulb scaled to the ends)")
       .def_readwrite("outrigger_length_ratio", &hull::DesignVariables::outrigger_length_ratio)
       .def_readwrite("outrigger_L_over_B", &hull::DesignVariables::outrigger_L_over_B)
       .def_readwrite("outrigger_B_over_T", &hull::DesignVariables::outrigger_B_over_T)
@@ -186,6 +188,8 @@ PYBIND11_MODULE(_hullopt, m) {
       .def_readonly("type", &hull::HullForm::type)
       .def_readonly("draught_m", &hull::HullForm::draught_m, "[m] design waterline above the baseline")
       .def_readonly("length_m", &hull::HullForm::length_m, "[m] waterline length of the main body")
+      .def_readonly("adjustments", &hull::HullForm::adjustments,
+                    "what the generator changed to build it (on_infeasible: nearest), one line each")
       .def_property_readonly("body_count", [](const hull::HullForm& h) { return h.bodies.size(); })
       .def(
           "stations",

@@ -46,7 +46,7 @@ for f in msi.csv summary.json config.resolved.yaml VERSION encounter_spectra.svg
          accel_per_m_vs_Hs.svg msi_vs_Hs.svg; do
   [ -s "$TMP/out1/$f" ] || fail "missing $f"
 done
-[ "$(head -1 "$TMP/out1/msi.csv")" = "design,Hs_m,Tz_s,position,x_from_cg_m,rms_accel_g,msi_pct" ] ||
+[ "$(head -1 "$TMP/out1/msi.csv")" = "design,Hs_m,Tz_s,position,x_from_cg_m,rms_accel_g,msi_pct,notes" ] ||
   fail "msi.csv header"
 # 6 seas x (forward, lcg, transom, bridge, mean) + header
 [ "$(wc -l < "$TMP/out1/msi.csv")" -eq 31 ] || fail "msi.csv rows: $(wc -l < "$TMP/out1/msi.csv")"

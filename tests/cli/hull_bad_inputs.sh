@@ -80,6 +80,28 @@ bad speed_units   "give exactly one of Fn, kn, m_s" "hull:
   parametric: {$P}
 speed: {kn: 40, m_s: 20}"
 bad yaml_syntax   "YAML syntax error" "hull: [unclosed"
+bad attitude_deck "key 'hull.attitude'" "hull:
+  parametric: {$P}
+  attitude: { sinkage_m: 2.5 }"
+bad attitude_trim "hull.attitude.trim_deg" "hull:
+  parametric: {$P}
+  attitude: { trim_deg: -9 }"
+bad attitude_key  "unknown key 'hull.attitude.heel_deg'" "hull:
+  parametric: {$P}
+  attitude: { heel_deg: 1 }"
+bad infeasible_wp "nearest feasible: LCF_pct_L = " "hull:
+  parametric: {type: catamaran, displacement_t: 1000, L_over_B: 11, B_over_T: 2, Cb: 0.4, Cp: 0.69, Cwp: 0.9, LCB_pct_L: -6.4, LCF_pct_L: -8}"
+bad on_infeasible "must be one of" "hull:
+  parametric: {$P, on_infeasible: clamp}"
+# A running attitude: hydrostatics.json carries the running hull beside the hull at rest.
+printf 'hull:\n  parametric: {%s}\n  attitude: { sinkage_m: 0.05, trim_deg: 0.5 }\n' "$P" > "$T/att.yaml"
+"$BIN" hull "$T/att.yaml" --out "$T/att" > /dev/null 2>&1 || { echo "FAIL attitude config refused"; fail=1; }
+grep -q '"running_attitude"' "$T/att/hydrostatics.json" || { echo "FAIL hydrostatics.json lacks running_attitude"; fail=1; }
+# The nearest feasible waterplane, built on request and recorded.
+printf 'hull:\n  parametric: {type: catamaran, displacement_t: 1000, L_over_B: 11, B_over_T: 2, Cb: 0.4, Cp: 0.69, Cwp: 0.9, LCB_pct_L: -6.4, LCF_pct_L: -8, on_infeasible: nearest}\n' > "$T/near.yaml"
+"$BIN" hull "$T/near.yaml" --out "$T/near" > "$T/near.log" 2>&1 || { echo "FAIL on_infeasible: nearest refused: $(cat "$T/near.log")"; fail=1; }
+grep -q 'LCF_pct_L -8 -> ' "$T/near/hydrostatics.json" || { echo "FAIL hydrostatics.json lacks the adjustment"; fail=1; }
+grep -q 'adjusted: ' "$T/near.log" || { echo "FAIL stdout lacks the adjustment"; fail=1; }
 "$BIN" hull "$T/nowhere.yaml" --out "$T/x" 2> "$T/nocfg.err"; rc=$?
 [ $rc -eq 1 ] && grep -q "cannot open config file" "$T/nocfg.err" || { echo "FAIL missing config: rc $rc $(cat "$T/nocfg.err")"; fail=1; }
 

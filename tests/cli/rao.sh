@@ -54,4 +54,23 @@ printf 'x_m,y_m,z_m\n0,0,0\n0,0.5,0.1\n1,0,0\n1,0.5,0.1\n2,0,0\n2,0.5,0.1\n' > "
 expect_error low_deck "hull: { offsets_csv: $tmp/low.csv, draught_m: 0.2 }
 speed: { m_s: 2.0 }
 solver: { kernel: impulsive, sections: 10, panels: 6, frequencies: { omega_rad_s: [2.0] } }" "waterline"
+# Running attitude: even keel given explicitly reproduces the default rao.csv byte for byte; the Delft 372
+# running trim and sinkage at Fn 0.75 (sinkage 2.57 mm up, trim 1.35 deg bow up) runs and says so in the header.
+base "{ Fn: 0.75 }" "{ lambda_over_L: [1.0, 1.5, 2.0] }" |
+  sed 's/spacing_m: 0.70 }/spacing_m: 0.70, attitude: { sinkage_m: 0.0, trim_deg: 0.0 } }/' > "$tmp/even.yaml"
+grep -q "attitude:" "$tmp/even.yaml" || fail "test setup: attitude not inserted"
+"$bin" rao "$tmp/even.yaml" --out "$tmp/even" > /dev/null || fail "even-keel attitude refused"
+cmp -s "$tmp/ok/rao.csv" "$tmp/even/rao.csv" || fail "even-keel attitude changed rao.csv"
+base "{ Fn: 0.75 }" "{ lambda_over_L: [1.0, 1.5, 2.0] }" |
+  sed 's/spacing_m: 0.70 }/spacing_m: 0.70, attitude: { sinkage_m: -0.00257, trim_deg: 1.35 } }/' > "$tmp/run.yaml"
+"$bin" rao "$tmp/run.yaml" --out "$tmp/run" > /dev/null || fail "running attitude refused"
+grep -q "running attitude: sinkage -0.00257 m" "$tmp/run/rao.csv" || fail "rao.csv header lacks the attitude"
+cmp -s "$tmp/ok/rao.csv" "$tmp/run/rao.csv" && fail "running attitude did not change rao.csv"
+# Trim that puts the Delft 372 deck (0.05 m freeboard) under water at the transom; a rise that lifts it out.
+expect_error deck_under "$(base "{ Fn: 0.75 }" "{ omega_rad_s: [2.0] }" |
+  sed 's/spacing_m: 0.70 }/spacing_m: 0.70, attitude: { trim_deg: 2.5 } }/')" "hull.attitude.*deck edge"
+expect_error lifted_out "$(base "{ Fn: 0.75 }" "{ omega_rad_s: [2.0] }" |
+  sed 's/spacing_m: 0.70 }/spacing_m: 0.70, attitude: { sinkage_m: -0.02 } }/')" "hull.attitude.*lifted out"
+expect_error big_trim "$(base "{ Fn: 0.75 }" "{ omega_rad_s: [2.0] }" |
+  sed 's/spacing_m: 0.70 }/spacing_m: 0.70, attitude: { trim_deg: 7 } }/')" "hull.attitude.trim_deg"
 echo "rao CLI: all checks passed"

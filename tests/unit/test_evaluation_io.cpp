@@ -130,7 +130,7 @@ TEST_CASE("msi.csv has the contract header, one row per position and a mean row"
   std::ifstream f(dir + "/msi.csv");
   std::string line;
   std::getline(f, line);
-  CHECK(line == "design,Hs_m,Tz_s,position,x_from_cg_m,rms_accel_g,msi_pct");
+  CHECK(line == "design,Hs_m,Tz_s,position,x_from_cg_m,rms_accel_g,msi_pct,notes");
   std::vector<std::string> rows;
   while (std::getline(f, line)) rows.push_back(line);
   REQUIRE(rows.size() == 2 * 2 * 5);  // designs × seas × (forward, lcg, transom, bridge, mean)
@@ -141,7 +141,10 @@ TEST_CASE("msi.csv has the contract header, one row per position and a mean row"
   CHECK(rows[4].rfind("\"hull, one\",1,5.5,mean,,", 0) == 0);
   CHECK(rows[10].rfind("hull2,1,5.5,forward,15,", 0) == 0);
   // The mean row's MSI is the mean of the three standard rows (read back from the text).
-  auto msi = [](const std::string& row) { return std::stod(row.substr(row.rfind(',') + 1)); };
+  auto msi = [](std::string row) {  // the field before the (empty) notes
+    row = row.substr(0, row.rfind(','));
+    return std::stod(row.substr(row.rfind(',') + 1));
+  };
   CHECK(msi(rows[9]) == Approx((msi(rows[5]) + msi(rows[6]) + msi(rows[7])) / 3.0).epsilon(1e-5));
 }
 
@@ -172,4 +175,19 @@ TEST_CASE("evaluation outputs: summary.json and the paper-style plots", "[io][pl
   CHECK(fig10.find("σ_a / Hs [g/m]") != std::string::npos);
   CHECK(io::ReferenceSeaIndex(designs[0].evaluation.seas) == 1);
   CHECK_THROWS_AS(io::WriteEvaluationOutputs(dir, {}, sk::EvaluationOptions{}), io::InputError);
+}
+
+TEST_CASE("plots keep a design's own number (12_TRIa stays 12 when hull 11 is left out)", "[io][plots]") {
+  auto designs = TwoDesigns();
+  designs[0].name = "10_SW2";
+  designs[1].name = "12_TRIa";
+  designs[1].group = designs[0].group;  // one panel, so the x positions are comparable
+  for (auto& d : designs) d.parameters["Fr"] = 0.7;
+  const std::string fr = io::RenderSvg(io::MsiVsParameterFigure(designs, "Fr", "Fr [-]", 1));
+  CHECK(fr.find(">12<") != std::string::npos);
+  CHECK(fr.find(">10<") != std::string::npos);
+  const auto fig = io::AccelerationPerMetreFigure(designs, 1);
+  REQUIRE(fig.panels.size() == 1);
+  CHECK(fig.panels[0].x_ticks == std::vector<double>{10.0, 12.0});
+  CHECK(fig.panels[0].series[0].x == std::vector<double>{10.0, 12.0});
 }

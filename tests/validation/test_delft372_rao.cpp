@@ -25,23 +25,15 @@
 #include "seakeeping/motions/frequency_list.h"
 #include "seakeeping/motions/rao_solver.h"
 #include "support/delft372_hull.h"
+#include "support/delft372_tank.h"
 
 namespace sk = hullopt::sk;
 
 TEST_CASE("Delft 372 Fn 0.75: peak heave against the tank", "[validation][delft372]") {
   constexpr double kG = 9.81, kRho = 1000.0, kL = 3.0;
   const double U = 0.75 * std::sqrt(kG * kL);
-  const auto tank = hullopt::io::ReadTankRaoCsv(std::string(HULLOPT_SOURCE_DIR) +
-                                                "/data/delft372/delft372_tank_rao_fn075.csv");
-  hullopt::io::MeasuredRao m;
-  m.label = "tank (van 't Veer 1998)";
-  for (const auto& p : tank) {
-    m.lambda_over_L.push_back(p.lambda_over_L);
-    m.heave_amp.push_back(p.heave_amp);
-    m.heave_phase_deg.push_back(p.heave_phase_deg);
-    m.pitch_amp.push_back(p.pitch_amp);
-    m.pitch_phase_deg.push_back(p.pitch_phase_deg);
-  }
+  const auto tank = hullopt::testing::Delft372TankRao(HULLOPT_SOURCE_DIR);
+  const hullopt::io::MeasuredRao m = hullopt::testing::MeasuredFromTank(tank);
   const auto w = sk::WaveFrequencies(
       sk::FrequencySpec::Range(sk::FrequencySpec::Quantity::kLambdaOverL, 0.8, 3.0, 89), U, kG, kL);
   auto compute = [&](int sections, int panels, sk::StationLayout layout = sk::kDefaultStationLayout,

@@ -61,21 +61,35 @@ TEST_CASE("Table 1 hulls: configs reproduce L, Fr, coefficients and centroids", 
     root.Finish();
     CHECK(opts.design.displacement_t == 1000.0);
     CHECK(water.rho_kg_m3 == 1025.0);
+    double lcf_expected = r.LCF;
     if (r.name == "SW3") {
-      // Documented miss: Cwp 0.76 with LCF -12.5 % L is beyond the bound LCF >= (Cwp/2 - 1/2) 100 = -12 % L
-      // for any waterplane no wider than B. It must be refused naming the variables and the rule.
+      // Cwp 0.76 with LCF -12.5 % L is beyond the bound LCF >= (Cwp/2 - 1/2) 100 = -12 % L for any waterplane
+      // no wider than B. Without the opt-in it is refused naming the variables, the rule and the nearest
+      // feasible combination; the config opts in (on_infeasible: nearest) and records the change.
+      REQUIRE(opts.design.on_infeasible == hull::OnInfeasible::kNearest);
+      io::HullOptions refuse = opts;
+      refuse.design.on_infeasible = hull::OnInfeasible::kRefuse;
       try {
-        io::LoadHull(opts, cfg);
-        FAIL("SW3 should be refused");
+        io::LoadHull(refuse, cfg);
+        FAIL("SW3 should be refused without on_infeasible: nearest");
       } catch (const io::InputError& e) {
         const std::string m = e.what();
         CHECK(m.find("Cwp = 0.76") != std::string::npos);
         CHECK(m.find("LCF_pct_L = -12.5") != std::string::npos);
-        CHECK(m.find("rule") != std::string::npos);
+        CHECK(m.find("bound") != std::string::npos);
+        CHECK(m.find("nearest feasible: LCF_pct_L = ") != std::string::npos);
       }
-      continue;
+      const hull::HullForm h = io::LoadHull(opts, cfg);
+      REQUIRE(h.adjustments.size() == 1);
+      const std::string& a = h.adjustments[0];
+      CHECK(a.find("LCF_pct_L -12.5 -> ") != std::string::npos);
+      // The built LCF is the one the adjustment names (kept coefficients are checked below as for every hull).
+      const std::string to = a.substr(a.find("-> ") + 3);
+      lcf_expected = std::stod(to.substr(0, to.find(' ')));
+      CHECK(lcf_expected > r.LCF);
     }
     const hull::HullForm h = io::LoadHull(opts, cfg);
+    if (r.name != "SW3") CHECK(h.adjustments.empty());
     const hull::Hydrostatics hs = hull::ComputeHydrostatics(h, water.rho_kg_m3);
     CHECK(hs.displacement_t == Approx(1000.0).epsilon(1e-9));
     CHECK(hs.L_m == Approx(r.L).epsilon(kLengthRelTol));
@@ -84,7 +98,7 @@ TEST_CASE("Table 1 hulls: configs reproduce L, Fr, coefficients and centroids", 
     CHECK(hs.Cp == Approx(r.Cp).margin(kCoefficientTol));
     CHECK(hs.Cwp == Approx(r.Cwp).margin(kCoefficientTol));
     CHECK(hs.LCB_pct_L == Approx(r.LCB).margin(kCentroidTolPctL));
-    CHECK(hs.LCF_pct_L == Approx(r.LCF).margin(kCentroidTolPctL));
+    CHECK(hs.LCF_pct_L == Approx(lcf_expected).margin(kCentroidTolPctL));
     const int expected_bodies =
         r.type == "catamaran" || r.type == "swath" ? 2 : (r.type == "trihull" ? 3 : 1);
     CHECK(h.BodyCount() == expected_bodies);

@@ -37,6 +37,22 @@ DesignVariables Base(HullType type) {
   return dv;
 }
 
+// SW1 of Table 1 (hull 9), with the previous (elliptic, scaled) bulb family unless a bulb height is given.
+DesignVariables Sw1() {
+  DesignVariables dv = Base(HullType::kSwath);
+  dv.L_over_B = 16.1;
+  dv.B_over_T = 1.51;
+  dv.Cb = 0.55;
+  dv.Cp = 0.75;
+  dv.Cwp = 0.38;
+  dv.LCB_pct_L = -10.9;
+  dv.LCF_pct_L = -14.6;
+  dv.strut_ratio = 0.7;
+  dv.transom_beam_ratio = 0.3;
+  dv.transom_immersion = 0.6;
+  return dv;
+}
+
 std::string Refusal(const DesignVariables& dv) {
   try {
     GenerateHull(dv);
@@ -88,20 +104,7 @@ TEST_CASE("generated hulls meet their targets: all types and styles", "[generato
     dv.transom_beam_ratio = 0.7;
     CheckTargets(dv);
   }
-  SECTION("SWATH") {
-    DesignVariables dv = Base(HullType::kSwath);
-    dv.L_over_B = 16.1;
-    dv.B_over_T = 1.51;
-    dv.Cb = 0.55;
-    dv.Cp = 0.75;
-    dv.Cwp = 0.38;
-    dv.LCB_pct_L = -10.9;
-    dv.LCF_pct_L = -14.6;
-    dv.strut_ratio = 0.7;
-    dv.transom_beam_ratio = 0.3;
-    dv.transom_immersion = 0.6;
-    CheckTargets(dv);
-  }
+  SECTION("SWATH") { CheckTargets(Sw1()); }
   SECTION("trihull") {
     DesignVariables dv = Base(HullType::kTrihull);
     dv.L_over_B = 8.0;
@@ -152,4 +155,63 @@ TEST_CASE("impossible combinations are refused naming variables and rule", "[gen
   DesignVariables style = Base(HullType::kCatamaran);
   style.section_style = SectionStyle::kSwathBulb;
   CHECK_THAT(Refusal(style), Catch::Contains("section_style"));
+}
+
+TEST_CASE("on_infeasible: nearest builds the nearest feasible waterplane and records the change",
+          "[generator][infeasible]") {
+  DesignVariables dv = Base(HullType::kCatamaran);  // Cwp 0.9 with LCF -8: beyond the bound -5 % L
+  dv.Cwp = 0.9;
+  dv.LCF_pct_L = -8.0;
+  const std::string refusal = Refusal(dv);
+  REQUIRE(refusal.find("nearest feasible: LCF_pct_L = ") != std::string::npos);
+  dv.on_infeasible = OnInfeasible::kNearest;
+  const HullForm h = GenerateHull(dv);
+  REQUIRE(h.adjustments.size() == 1);
+  const std::string& a = h.adjustments[0];
+  const std::string to = a.substr(a.find("-> ") + 3);
+  const double lcf = std::stod(to.substr(0, to.find(' ')));
+  // Independent of the family: no waterplane no wider than its peak (1) of area 0.9 has its centroid aft of
+  // (Cwp/2 - 1/2) 100 = -5 % L, so the nearest feasible LCF cannot lie aft of it.
+  CHECK(lcf >= -5.0);
+  CHECK(lcf < 0.0);
+  // It is what was built (Cwp kept), and the refusal message named the same value.
+  const Hydrostatics hs = ComputeHydrostatics(h, dv.rho_kg_m3);
+  CHECK(hs.Cwp == Approx(0.9).margin(kCoefficientTol));
+  CHECK(hs.LCF_pct_L == Approx(lcf).margin(kCentroidTolPctL));
+  CHECK(refusal.find("LCF_pct_L = " + to.substr(0, to.find(' '))) != std::string::npos);
+  // Nearest: 0.25 % L further aft is refused again.
+  DesignVariables aft = dv;
+  aft.on_infeasible = OnInfeasible::kRefuse;
+  aft.LCF_pct_L = lcf - 0.25;
+  CHECK_THAT(Refusal(aft), Catch::Contains("beyond the fair-curve family") && Catch::Contains("nearest feasible"));
+  // A feasible design is built unchanged.
+  CHECK(GenerateHull(Base(HullType::kCatamaran)).adjustments.empty());
+}
+
+TEST_CASE("rounded-bulb SWATH: targets met, the bulb keeps its height to the ends (no thin plates)",
+          "[generator][swath]") {
+  DesignVariables dv = Sw1();
+  dv.bulb_height_ratio = 0.8;
+  CheckTargets(dv);
+  const HullForm h = GenerateHull(dv);
+  const double T = h.draught_m;
+  // Every station whose section stands out of its strut (a bulb) is at least as tall, over the part wider than
+  // the strut, as a quarter of the draught: the old family flattened to a few per cent of T towards the bow.
+  constexpr double kMinBulbHeightOverT = 0.25;
+  int bulbs = 0;
+  for (const auto& s : h.bodies[0].stations) {
+    if (s.y_m.size() < 3) continue;
+    const double strut = s.y_m.back();
+    double z_lo = INFINITY, z_hi = -INFINITY;
+    for (size_t k = 0; k < s.y_m.size(); ++k)
+      if (s.y_m[k] > 1.05 * strut && s.z_m[k] < T) z_lo = std::min(z_lo, s.z_m[k]), z_hi = std::max(z_hi, s.z_m[k]);
+    if (!std::isfinite(z_lo)) continue;
+    ++bulbs;
+    INFO("x = " << s.x_m);
+    CHECK((z_hi - z_lo) / T > kMinBulbHeightOverT);
+  }
+  CHECK(bulbs > 20);
+  // A bulb too low for Cm is refused naming the variable.
+  dv.bulb_height_ratio = 0.3;
+  CHECK_THAT(Refusal(dv), Catch::Contains("bulb_height_ratio"));
 }
