@@ -44,7 +44,14 @@ grep -q "in use by another hullopt process (pid $pbusy" "$work/hull.err" || { ca
 kill -0 "$pbusy" 2>/dev/null || fail "the campaign finished before the refusal could be tested"
 awk -v a="$t0" -v b="$(date +%s.%N)" 'BEGIN{exit !(b-a < 2)}' || fail "refusal took more than 2 s"
 
-# SIGKILL while holding the lock, then restart: the stale lock is taken over and the campaign resumes.
+# SIGKILL while holding the lock, then restart: the stale lock is taken over and the campaign resumes. The
+# kill waits until the journal holds a few rows (on a quiet machine the refusal above is over before the
+# first evaluation is logged, and a run killed then has nothing to resume).
+for _ in $(seq 300); do
+  [ -f "$work/busy/history.csv" ] && [ "$(grep -vc '^#' "$work/busy/history.csv")" -ge 4 ] && break
+  sleep 0.02
+done
+kill -0 "$pbusy" 2>/dev/null || fail "the campaign finished before it could be killed"
 kill -9 "$pbusy"; wait "$pbusy" 2>/dev/null
 [ -s "$work/busy/hullopt.lock" ] || fail "the killed run's lock file does not name it"
 "$HULLOPT" optimize "$work/slow.yaml" --out "$work/busy" > /dev/null 2> "$work/resume.err" ||
