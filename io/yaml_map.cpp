@@ -9,6 +9,28 @@
 
 namespace hullopt::io {
 namespace {
+
+// yaml-cpp 0.7 never returns from a document whose first token is ',' (found by fuzzing: one line "," hangs
+// the parser). No config can begin that way (',' is a flow indicator), so such a document is refused here,
+// before the parser sees it.
+void RefuseLeadingComma(const std::string& text, const std::string& file) {
+  std::istringstream in(text);
+  std::string line;
+  bool at_document_start = true;
+  for (int lineno = 1; std::getline(in, line); ++lineno) {
+    std::size_t a = line.find_first_not_of(" \t\r");
+    if (a == std::string::npos || line[a] == '#' || (at_document_start && line[a] == '%')) continue;
+    if (line.compare(a, 3, "---") == 0) {
+      at_document_start = true;
+      a = line.find_first_not_of(" \t\r", a + 3);
+      if (a == std::string::npos || line[a] == '#') continue;
+    }
+    if (at_document_start && line[a] == ',')
+      throw InputError(file + ":" + std::to_string(lineno) +
+                       ": YAML syntax error: a document cannot begin with ',' (a flow indicator)");
+    at_document_start = false;
+  }
+}
 std::string Line(const YAML::Node& n) {
   const auto m = n.Mark();
   return m.line >= 0 ? std::to_string(m.line + 1) : std::string("?");
@@ -86,6 +108,7 @@ YamlMap YamlMap::LoadFile(const std::string& file) {
   std::ostringstream text;
   text << in.rdbuf();
   RequireUtf8(text.str(), file);
+  RefuseLeadingComma(text.str(), file);
   std::vector<YAML::Node> docs;
   try {
     docs = YAML::LoadAll(text.str());

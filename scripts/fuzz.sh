@@ -17,6 +17,10 @@ targets=()
 for n in "${names[@]}"; do targets+=("fuzz_$n"); done
 cmake --build build-fuzz -j "$(nproc)" --target "${targets[@]}" > build-fuzz.log
 mkdir -p build-fuzz/findings
+# FUZZ_SEED and FUZZ_RUNS make a run reproducible (the CI smoke run: the same inputs on every machine);
+# without them libFuzzer picks a random seed and runs for SECONDS.
+extra=(-seed="${FUZZ_SEED:-0}")
+[ -n "${FUZZ_RUNS:-}" ] && extra+=(-runs="$FUZZ_RUNS")
 status=0
 for n in "${names[@]}"; do
   work=$(mktemp -d)
@@ -24,7 +28,7 @@ for n in "${names[@]}"; do
   start=$(date +%s)
   # -timeout: one input taking longer is a hang; -rss_limit_mb: one input exhausting memory is a bug too.
   if ! ./build-fuzz/tests/fuzz/fuzz_"$n" "$work" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 \
-       -max_len=65536 -artifact_prefix=build-fuzz/findings/"$n"- -print_final_stats=1 \
+       -max_len=65536 -artifact_prefix=build-fuzz/findings/"$n"- -print_final_stats=1 "${extra[@]}" \
        > build-fuzz/"$n".log 2>&1; then
     echo "fuzz_$n: FAILED (see build-fuzz/$n.log and build-fuzz/findings/)"; tail -30 build-fuzz/"$n".log; status=1
   else
