@@ -6,9 +6,11 @@
 #include <unistd.h>
 
 #include <cerrno>
+#include <chrono>
 #include <cstring>
 #include <ctime>
 #include <filesystem>
+#include <thread>
 
 #include "io/input_error.h"
 
@@ -51,7 +53,13 @@ OutputFolderLock::OutputFolderLock(const std::string& dir, const std::string& co
     if (fd_ < 0) throw InputError(path_ + ": cannot open the output folder's lock file: " + std::strerror(errno));
     if (::flock(fd_, LOCK_EX | LOCK_NB) != 0) {
       const int err = errno;
-      const std::string holder = ReadAll(fd_);
+      // The holder writes its identity right after taking the lock: give it a moment, so that two runs
+      // started together still name each other.
+      std::string holder = ReadAll(fd_);
+      for (int wait = 0; holder.empty() && err == EWOULDBLOCK && wait < 50; ++wait) {
+        std::this_thread::sleep_for(std::chrono::milliseconds(10));
+        holder = ReadAll(fd_);
+      }
       ::close(fd_);
       fd_ = -1;
       if (err != EWOULDBLOCK)
