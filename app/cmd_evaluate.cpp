@@ -29,7 +29,7 @@
 #include <stdexcept>
 
 #include "app/commands.h"
-#include "app/design_case.h"
+#include "io/design_config.h"
 #include "app/output_dir.h"
 #include "io/config_path.h"
 #include "io/evaluation_report.h"
@@ -61,10 +61,10 @@ struct DesignInput {
 
 // A design computed by the strip solver from its own config (root = that config's map).
 void ComputeDesign(io::YamlMap& root, const std::string& file, DesignInput* in, double cs_override) {
-  const DesignCase dc = LoadDesignCase(root, file, in->design.name);
+  const eval::DesignCase dc = io::LoadDesignCase(root, file, in->design.name);
   root.Finish();
-  in->design.rao = ComputeDesignRaos(dc, SeaFrequencies(dc), cs_override);
-  in->design.frequency_advice = SeaFrequencyAdvice(dc, file);
+  in->design.rao = eval::ComputeDesignRaos(dc, eval::SeaFrequencies(dc), cs_override);
+  in->design.frequency_advice = eval::SeaFrequencyAdvice(dc, file);
   in->design.hull = dc.Extent();
   for (const auto& [k, v] : dc.Parameters()) in->design.parameters.emplace(k, v);
 }
@@ -150,9 +150,9 @@ void Run(const std::string& config_file, const std::string& out_dir) {
     DesignInput in;
     in.where = root.Where("hull");
     in.design.name = std::filesystem::path(config_file).stem().string();
-    const DesignCase dc = LoadDesignCase(root, config_file, in.design.name);
-    in.design.rao = ComputeDesignRaos(dc, SeaFrequencies(dc));
-    in.design.frequency_advice = SeaFrequencyAdvice(dc, config_file);
+    const eval::DesignCase dc = io::LoadDesignCase(root, config_file, in.design.name);
+    in.design.rao = eval::ComputeDesignRaos(dc, eval::SeaFrequencies(dc));
+    in.design.frequency_advice = eval::SeaFrequencyAdvice(dc, config_file);
     in.design.hull = dc.Extent();
     in.design.parameters = dc.Parameters();
     inputs.push_back(in);

@@ -11,7 +11,9 @@
 #include <vector>
 
 #include "app/campaign_setup.h"
-#include "app/design_case.h"
+#include "io/design_config.h"
+#include "io/motion_config.h"
+#include "evaluation/trial_design.h"
 #include "io/seas_config.h"
 #include "parametric_hull/hull_generator.h"
 #include "resistance/calm_water_resistance.h"
@@ -31,10 +33,10 @@ app::LoadedCampaign& Campaign() {
 }
 
 // The base design with the campaign's mass rule (displacement fixed, LCG = LCB, k_yy = 0.25 L, KG = T).
-const app::DesignCase& Design() {
-  static const app::DesignCase d = [] {
+const eval::DesignCase& Design() {
+  static const eval::DesignCase d = [] {
     io::YamlMap root = io::YamlMap::LoadFile(kConfig);
-    app::DesignCase c = app::LoadDesignCase(root, kConfig, "design");
+    eval::DesignCase c = io::LoadDesignCase(root, kConfig, "design");
     c.mass.mass_kg = c.hydrostatics.displacement_kg;
     c.mass.lcg_m_from_ap = c.hydrostatics.lcb_m_from_ap;
     c.mass.kyy_m = 0.25 * c.hydrostatics.L_m;
@@ -49,7 +51,7 @@ hull::DesignVariables Variables() {
   return io::ParseHullConfig(root, io::ParseWater(root)).design;
 }
 
-sk::RaoSolverOptions Options() { return io::RaoOptions(Design().solver, "design", Design().solver.cs); }
+sk::RaoSolverOptions Options() { return eval::RaoOptions(Design().solver, "design", Design().solver.cs()); }
 }  // namespace
 
 static void BM_Evaluation(benchmark::State& state) {
@@ -65,7 +67,7 @@ static void BM_HullGeneration(benchmark::State& state) {
 BENCHMARK(BM_HullGeneration)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 static void BM_Hydrostatics(benchmark::State& state) {  // an evaluation computes them twice (at rest, with KG)
-  const app::DesignCase& d = Design();
+  const eval::DesignCase& d = Design();
   for (auto _ : state) {
     benchmark::DoNotOptimize(hull::ComputeHydrostatics(d.hull, d.water.rho_kg_m3));
     benchmark::DoNotOptimize(hull::ComputeHydrostatics(d.hull, d.water.rho_kg_m3, d.mass.kg_m));
@@ -74,7 +76,7 @@ static void BM_Hydrostatics(benchmark::State& state) {  // an evaluation compute
 BENCHMARK(BM_Hydrostatics)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 static void BM_StripKernel(benchmark::State& state) {
-  const app::DesignCase& d = Design();
+  const eval::DesignCase& d = Design();
   const sk::RaoSolverOptions o = Options();
   for (auto _ : state)
     benchmark::DoNotOptimize(sk::BuildHullStripKernel(d.running_hull, o, d.speed_m_s, d.water.rho_kg_m3,
@@ -83,11 +85,11 @@ static void BM_StripKernel(benchmark::State& state) {
 BENCHMARK(BM_StripKernel)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 static void BM_PeriodicRaos(benchmark::State& state) {
-  const app::DesignCase& d = Design();
+  const eval::DesignCase& d = Design();
   const sk::RaoSolverOptions o = Options();
   const sk::StripKernel kernel = sk::BuildHullStripKernel(d.running_hull, o, d.speed_m_s, d.water.rho_kg_m3,
                                                           d.water.g_m_s2, sk::TransientGreenKernelBuilder());
-  const std::vector<double> w = app::SeaFrequencies(d);
+  const std::vector<double> w = eval::SeaFrequencies(d);
   for (auto _ : state) {
     const sk::HeadSeaShipModel model(kernel, d.mass, o.motion);
     benchmark::DoNotOptimize(sk::SolvePeriodicRaos(model, w));
@@ -96,8 +98,8 @@ static void BM_PeriodicRaos(benchmark::State& state) {
 BENCHMARK(BM_PeriodicRaos)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 static void BM_SeasAndMsi(benchmark::State& state) {
-  const app::DesignCase& d = Design();
-  const sk::RaoTable rao = app::ComputeDesignRaos(d, app::SeaFrequencies(d));
+  const eval::DesignCase& d = Design();
+  const sk::RaoTable rao = eval::ComputeDesignRaos(d, eval::SeaFrequencies(d));
   io::YamlMap root = io::YamlMap::LoadFile(kConfig);
   const auto spectra = sk::BuildSpectra(io::ReadSeas(root));
   for (auto _ : state) benchmark::DoNotOptimize(sk::EvaluateDesign(rao, d.Extent(), spectra, {}, {}));
@@ -105,7 +107,7 @@ static void BM_SeasAndMsi(benchmark::State& state) {
 BENCHMARK(BM_SeasAndMsi)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 static void BM_CalmWaterResistance(benchmark::State& state) {
-  const app::DesignCase& d = Design();
+  const eval::DesignCase& d = Design();
   for (auto _ : state)
     benchmark::DoNotOptimize(res::CalmWaterResistance(d.hull, {}).At(d.speed_m_s, d.water.rho_kg_m3, d.water.g_m_s2));
 }
@@ -114,17 +116,17 @@ BENCHMARK(BM_CalmWaterResistance)->Unit(benchmark::kMillisecond)->UseRealTime();
 // The trial design as the evaluator sets it up from x (hull generation and hydrostatics included).
 static void BM_TrialDesignSetup(benchmark::State& state) {
   io::YamlMap root = io::YamlMap::LoadFile(kConfig);
-  YAML::Node base(YAML::NodeType::Map);
-  for (const char* k : {"hull", "water", "speed", "solver"}) base[k] = YAML::Clone(root.raw()[k]);
-  const std::vector<std::string> names = {"L_over_B", "B_over_T", "Cp", "LCF_pct_L"};
-  for (auto _ : state) {
-    YAML::Node cfg = YAML::Clone(base);
-    for (std::size_t i = 0; i < names.size(); ++i) cfg["hull"]["parametric"][names[i]] = kStart[i];
-    io::YamlMap m(cfg, "", kConfig, YAML::Node(YAML::NodeType::Map));
-    app::DesignCase d = app::LoadDesignCase(m, kConfig, "design");
-    d.hydrostatics = hull::ComputeHydrostatics(d.hull, d.water.rho_kg_m3, d.hydrostatics.T_m);
-    benchmark::DoNotOptimize(d);
-  }
+  io::DesignConfig c;
+  io::LoadDesignCase(root, kConfig, "design", true, &c);
+  eval::DesignBasis basis;
+  basis.config_file = kConfig;
+  basis.variables = c.hull.design;
+  basis.attitude = c.hull.attitude;
+  basis.water = c.water;
+  basis.speed = c.speed;
+  basis.solver = c.solver;
+  const auto fields = eval::TrialFields({"L_over_B", "B_over_T", "Cp", "LCF_pct_L"});
+  for (auto _ : state) benchmark::DoNotOptimize(eval::BuildTrialDesign(basis, fields, kStart));
 }
 BENCHMARK(BM_TrialDesignSetup)->Unit(benchmark::kMillisecond)->UseRealTime();
 
