@@ -30,7 +30,7 @@
 #include <stdexcept>
 
 #include "app/commands.h"
-#include "app/design_case.h"
+#include "io/design_config.h"
 #include "app/output_dir.h"
 #include "io/config_path.h"
 #include "io/evaluation_report.h"
@@ -60,18 +60,18 @@ std::string DefaultName(const std::string& csv) {
 struct DesignInput {
   io::EvaluatedDesign design;
   std::string where;  // config location for messages
-  std::optional<DesignCase> computed;  // the design when its RAOs were computed here (for the resolution check)
+  std::optional<eval::DesignCase> computed;  // the design when its RAOs were computed here (for the resolution check)
   double cs_override = -1.0;
 };
 
 // A design computed by the strip solver from its own config (root = that config's map).
 void ComputeDesign(io::YamlMap& root, const std::string& file, DesignInput* in, double cs_override) {
-  const DesignCase dc = LoadDesignCase(root, file, in->design.name);
+  const eval::DesignCase dc = io::LoadDesignCase(root, file, in->design.name);
   root.Finish();
-  in->design.rao = ComputeDesignRaos(dc, SeaFrequencies(dc), cs_override);
+  in->design.rao = eval::ComputeDesignRaos(dc, eval::SeaFrequencies(dc), cs_override);
   in->computed = dc;
   in->cs_override = cs_override;
-  in->design.frequency_advice = SeaFrequencyAdvice(dc, file);
+  in->design.frequency_advice = eval::SeaFrequencyAdvice(dc, file);
   in->design.hull = dc.Extent();
   for (const auto& [k, v] : dc.Parameters()) in->design.parameters.emplace(k, v);
 }
@@ -127,7 +127,7 @@ DesignInput ReadDesign(io::YamlMap& m, const std::string& config_file, double g,
 void CheckResolution(const io::ResolutionCheckConfig& check, const std::vector<sk::WaveSpectrum>& spectra,
                      const std::vector<sk::PassengerPosition>& points, const sk::EvaluationOptions& options,
                      DesignInput* in) {
-  DesignCase fine = *in->computed;
+  eval::DesignCase fine = *in->computed;
   fine.solver.sections *= check.factor;
   fine.solver.panels *= check.factor;
   if (fine.solver.sections > 400 || fine.solver.panels > 100)
@@ -135,7 +135,7 @@ void CheckResolution(const io::ResolutionCheckConfig& check, const std::vector<s
                          std::to_string(check.factor) + " asks for " + std::to_string(fine.solver.sections) +
                          " sections x " + std::to_string(fine.solver.panels) +
                          " panels, beyond the solver's 400 x 100");
-  const sk::RaoTable fine_rao = ComputeDesignRaos(fine, in->design.rao.omega_rad_s, in->cs_override);
+  const sk::RaoTable fine_rao = eval::ComputeDesignRaos(fine, in->design.rao.omega_rad_s, in->cs_override);
   sk::DesignEvaluation fine_eval;
   try {
     fine_eval = sk::EvaluateDesign(fine_rao, in->design.hull, spectra, points, options);
@@ -184,9 +184,9 @@ void Run(const std::string& config_file, const std::string& out_dir) {
     DesignInput in;
     in.where = root.Where("hull");
     in.design.name = std::filesystem::path(config_file).stem().string();
-    const DesignCase dc = LoadDesignCase(root, config_file, in.design.name);
-    in.design.rao = ComputeDesignRaos(dc, SeaFrequencies(dc));
-    in.design.frequency_advice = SeaFrequencyAdvice(dc, config_file);
+    const eval::DesignCase dc = io::LoadDesignCase(root, config_file, in.design.name);
+    in.design.rao = eval::ComputeDesignRaos(dc, eval::SeaFrequencies(dc));
+    in.design.frequency_advice = eval::SeaFrequencyAdvice(dc, config_file);
     in.design.hull = dc.Extent();
     in.design.parameters = dc.Parameters();
     in.computed = dc;
