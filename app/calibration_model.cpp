@@ -1,10 +1,12 @@
 #include "app/calibration_model.h"
 
+#include <algorithm>
 #include <memory>
 
 #include <cmath>
 
 #include "app/design_case.h"
+#include "app/run_checks.h"
 #include "io/input_error.h"
 #include "optimizer/synthetic_oscillator_rao.h"
 #include "optimizer/tank_rao_frequency.h"
@@ -22,6 +24,16 @@ opt::CsRaoModel StripSolverModel(io::YamlMap& root, const io::CalibrateHull& hul
                          "']: the strip solver calibrates the config's own hull (the calibrate.data form); "
                          "calibrate several hulls with one config each, or give each a test model");
   const DesignCase base = LoadDesignCase(root, root.file(), "calibration hull", /*read_speed=*/false);
+  // One kernel per speed, all built and held before the fit; each Cs trial of the fit (at most 100
+  // trust-region iterations with a derivative each: 300 sweeps) is a 2 x 2 solve per measured point.
+  io::StripWork work = io::StripWorkFromResolved(root.resolved(), 1);
+  work.frequencies = 1;
+  for (const auto& c : mine) work.frequencies = std::max<long>(work.frequencies, static_cast<long>(c.points.size()));
+  work.kernels = static_cast<long>(mine.size());
+  work.parallel = static_cast<int>(mine.size());
+  work.sweeps_per_kernel = 300;
+  work.count_key = work.parallel_key = "calibrate.speeds_Fn";
+  CheckRunCost("calibrate", work);
   struct Speed {
     DesignCase design;
     sk::StripKernel kernel;

@@ -31,6 +31,7 @@
 #include "app/commands.h"
 #include "app/design_case.h"
 #include "app/output_dir.h"
+#include "app/run_checks.h"
 #include "io/config_path.h"
 #include "io/evaluation_report.h"
 #include "io/input_error.h"
@@ -63,7 +64,10 @@ struct DesignInput {
 void ComputeDesign(io::YamlMap& root, const std::string& file, DesignInput* in, double cs_override) {
   const DesignCase dc = LoadDesignCase(root, file, in->design.name);
   root.Finish();
-  in->design.rao = ComputeDesignRaos(dc, SeaFrequencies(dc), cs_override);
+  const std::vector<double> omega = SeaFrequencies(dc);
+  CheckRunCost("evaluate: design '" + in->design.name + "'",
+               io::StripWorkFromResolved(root.resolved(), static_cast<long>(omega.size())));
+  in->design.rao = ComputeDesignRaos(dc, omega, cs_override);
   in->design.frequency_advice = SeaFrequencyAdvice(dc, file);
   in->design.hull = dc.Extent();
   for (const auto& [k, v] : dc.Parameters()) in->design.parameters.emplace(k, v);
@@ -151,7 +155,9 @@ void Run(const std::string& config_file, const std::string& out_dir) {
     in.where = root.Where("hull");
     in.design.name = std::filesystem::path(config_file).stem().string();
     const DesignCase dc = LoadDesignCase(root, config_file, in.design.name);
-    in.design.rao = ComputeDesignRaos(dc, SeaFrequencies(dc));
+    const std::vector<double> omega = SeaFrequencies(dc);
+    CheckRunCost("evaluate", io::StripWorkFromResolved(root.resolved(), static_cast<long>(omega.size())));
+    in.design.rao = ComputeDesignRaos(dc, omega);
     in.design.frequency_advice = SeaFrequencyAdvice(dc, config_file);
     in.design.hull = dc.Extent();
     in.design.parameters = dc.Parameters();
