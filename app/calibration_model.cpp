@@ -1,5 +1,8 @@
 #include "app/calibration_model.h"
 
+#include <algorithm>
+
+#include "app/run_checks.h"
 #include "evaluation/calibration_model.h"
 #include "io/design_config.h"
 #include "io/input_error.h"
@@ -28,6 +31,18 @@ opt::CsRaoModel MakeCalibrationModel(io::YamlMap& root, const io::CalibrateConfi
                              "calibrate several hulls with one config each, or give each a test model");
       const eval::DesignCase base =
           io::LoadDesignCase(root, root.file(), "calibration hull", /*read_speed=*/false);
+      // One kernel per speed, all built and held before the fit; each Cs trial of the fit (at most 100
+      // trust-region iterations with a derivative each: 300 sweeps) is a 2 x 2 solve per measured point.
+      io::StripWork work = io::StripWorkFromResolved(root.resolved(), 1);
+      work.frequencies = 1;
+      for (const auto& c : mine)
+        work.frequencies = std::max<long>(work.frequencies, static_cast<long>(c.points.size()));
+      work.kernels = static_cast<long>(mine.size());
+      work.parallel = static_cast<int>(mine.size());
+      work.sweeps_per_kernel = 300;
+      work.count_key = work.parallel_key = "calibrate.speeds_Fn";
+      // Strip theory has no kernel to reuse and is refused by the model below: no estimate for it.
+      if (base.solver.rao.method == sk::RaoSolverOptions::Method::kTimeDomainStrip) CheckRunCost("calibrate", work);
       part.model = eval::StripSolverCsModel(base, mine, warnings);
     }
     parts.push_back(std::move(part));

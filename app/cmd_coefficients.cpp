@@ -9,6 +9,7 @@
 #include "app/commands.h"
 #include "io/design_config.h"
 #include "app/output_dir.h"
+#include "app/run_checks.h"
 #include "io/coefficients_csv_writer.h"
 #include "io/coefficients_plot.h"
 #include "io/config_path.h"
@@ -44,6 +45,8 @@ void RunCoefficients(const std::string& config_file, const std::string& out_dir)
   root.Finish();
   const double L = d.hydrostatics.L_m, g = d.water.g_m_s2;
   const auto omega = sk::WaveFrequencies(d.solver.frequencies, d.speed_m_s, g, L);
+  CheckOutputDirConfig(out_dir, "coefficients", root.resolved());
+  CheckRunCost("coefficients", io::StripWorkFromResolved(root.resolved(), static_cast<long>(omega.size())));
   const sk::CoefficientTable t = eval::ComputeDesignCoefficients(d, omega);
   for (const auto& w : t.warnings) std::fprintf(stderr, "hullopt: warning: hull '%s': %s\n", name.c_str(), w.c_str());
   PrepareOutputDir(out_dir, "coefficients", config_file, root.resolved());

@@ -32,6 +32,7 @@
 #include "app/commands.h"
 #include "io/design_config.h"
 #include "app/output_dir.h"
+#include "app/run_checks.h"
 #include "io/config_path.h"
 #include "io/evaluation_report.h"
 #include "io/input_error.h"
@@ -68,7 +69,10 @@ struct DesignInput {
 void ComputeDesign(io::YamlMap& root, const std::string& file, DesignInput* in, double cs_override) {
   const eval::DesignCase dc = io::LoadDesignCase(root, file, in->design.name);
   root.Finish();
-  in->design.rao = eval::ComputeDesignRaos(dc, eval::SeaFrequencies(dc), cs_override);
+  const std::vector<double> omega = eval::SeaFrequencies(dc);
+  CheckRunCost("evaluate: design '" + in->design.name + "'",
+               io::StripWorkFromResolved(root.resolved(), static_cast<long>(omega.size())));
+  in->design.rao = eval::ComputeDesignRaos(dc, omega, cs_override);
   in->computed = dc;
   in->cs_override = cs_override;
   in->design.frequency_advice = eval::SeaFrequencyAdvice(dc, file);
@@ -185,7 +189,9 @@ void Run(const std::string& config_file, const std::string& out_dir) {
     in.where = root.Where("hull");
     in.design.name = std::filesystem::path(config_file).stem().string();
     const eval::DesignCase dc = io::LoadDesignCase(root, config_file, in.design.name);
-    in.design.rao = eval::ComputeDesignRaos(dc, eval::SeaFrequencies(dc));
+    const std::vector<double> omega = eval::SeaFrequencies(dc);
+    CheckRunCost("evaluate", io::StripWorkFromResolved(root.resolved(), static_cast<long>(omega.size())));
+    in.design.rao = eval::ComputeDesignRaos(dc, omega);
     in.design.frequency_advice = eval::SeaFrequencyAdvice(dc, config_file);
     in.design.hull = dc.Extent();
     in.design.parameters = dc.Parameters();

@@ -17,6 +17,7 @@
 #include "app/mpi_context.h"
 #include "app/output_dir.h"
 #include "app/progress.h"
+#include "app/run_checks.h"
 #include "hullopt/version.h"
 #include "io/campaign_outputs.h"
 #include "io/campaign_plots.h"
@@ -51,6 +52,7 @@ void RunExplore(const ExploreCliOptions& o) {
 #endif
   const int rank = MpiRank(), size = MpiSize();
   const int n = lc.config.explore.samples;
+  CheckCampaignCost("explore", lc.resolved, lc.config.block, n, lc.config.block + ".samples", threads);
 
   opt::ConstraintSet cs(def, evaluator.QuantityNames());
   io::HistoryLayout layout{def.VariableNames(), evaluator.SeaNames(), cs.ReportedQuantities()};

@@ -17,6 +17,7 @@
 #include "app/output_dir.h"
 #include "app/pareto_sweep.h"
 #include "app/progress.h"
+#include "app/run_checks.h"
 #include "hullopt/version.h"
 #include "io/campaign_outputs.h"
 #include "io/campaign_plots.h"
@@ -65,6 +66,10 @@ void RunOptimize(const OptimizeOptions& o) {
   const opt::CampaignDefinition& def = lc.config.definition;
   opt::Evaluator& evaluator = *lc.evaluator;
   const int threads = ResolveThreads(o.threads);
+  CheckCampaignCost("optimize", lc.resolved, lc.config.block,
+                    1 + static_cast<long>(def.starts) *
+                            (def.stopping.max_evaluations + (def.polish_algorithm.empty() ? 0 : def.polish_max_evaluations)),
+                    lc.config.block + ".starts x max_evaluations", 1);
 #ifdef _OPENMP
   omp_set_num_threads(threads);  // for the physics inside one evaluation
 #endif

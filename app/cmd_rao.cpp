@@ -7,6 +7,7 @@
 
 #include "app/commands.h"
 #include "app/output_dir.h"
+#include "app/run_checks.h"
 #include "io/hull_config.h"
 #include "io/input_error.h"
 #include "io/motion_config.h"
@@ -69,6 +70,8 @@ void RunRao(const std::string& config_file, const std::string& out_dir) {
                                              : sk::TransientGreenKernelBuilder(sc.sectional_force);
   const sk::RaoSolverOptions o = eval::RaoOptions(sc, hull_name, sc.cs());
   const auto omega = sk::WaveFrequencies(sc.frequencies, U, water.g_m_s2, hs.L_m);
+  CheckOutputDirConfig(out_dir, "rao", root.resolved());
+  CheckRunCost("rao", io::StripWorkFromResolved(root.resolved(), static_cast<long>(omega.size())));
   sk::RaoTable t;
   try {
     t = sk::ComputeRaos(running, mass, U, water.rho_kg_m3, water.g_m_s2, omega, o, builder);

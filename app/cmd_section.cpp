@@ -1,6 +1,7 @@
 // `hullopt section CONFIG --out DIR`: heave added mass and damping per unit length of a 2D section (or of
 // several identical sections side by side in one strip) from the chosen 2D solvers, written to section.csv
 // (ARCHITECTURE §4) and plotted nondimensionally in section.svg.
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -11,6 +12,7 @@
 
 #include "app/commands.h"
 #include "app/output_dir.h"
+#include "app/run_checks.h"
 #include "io/atomic_file.h"
 #include "io/input_error.h"
 #include "io/section_config.h"
@@ -121,6 +123,16 @@ void RunSection(const std::string& config_file, const std::string& out_dir) {
     strip = sk::PanelSectionStrip(cfg.strip);
   } catch (const std::exception& e) {  // ReadSectionConfig checked every field; this is a last guard
     throw io::InputError(config_file + ": section: " + e.what());
+  }
+  CheckOutputDirConfig(out_dir, "section", root.resolved());
+  if (std::find(cfg.methods.begin(), cfg.methods.end(), "time_domain") != cfg.methods.end()) {
+    io::StripWork work;
+    work.method = "section_time_domain";
+    work.panels = cfg.strip.panels;
+    work.bodies = cfg.strip.count;
+    work.frequencies = static_cast<long>(cfg.omegas_rad_s.size());
+    work.lags = sk::TimeDomainSectionOptions{}.max_lags;
+    CheckRunCost("section", work);
   }
   std::vector<MethodCurve> curves;
   for (const auto& m : cfg.methods) curves.push_back(RunMethod(m, strip, cfg, config_file));

@@ -1,5 +1,7 @@
 #include "app/commands.h"
 
+#include "app/run_checks.h"
+
 namespace hullopt::app {
 
 void AddAllCommands(CLI::App& app) {
@@ -12,6 +14,10 @@ void AddAllCommands(CLI::App& app) {
   AddExploreCommand(app);
   AddCalibrateCommand(app);
   AddResistanceCommand(app);
+  // The commands that run the strip solver estimate its cost first (app/run_checks.h).
+  ResetForceOption();
+  for (const char* name : {"section", "rao", "coefficients", "evaluate", "optimize", "explore", "calibrate"})
+    AddForceOption(app.get_subcommand(name));
 }
 
 }  // namespace hullopt::app

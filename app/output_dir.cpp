@@ -11,6 +11,7 @@
 #include "io/atomic_file.h"
 #include "io/input_error.h"
 #include "io/utf8_text.h"
+#include "io/yaml_difference.h"
 
 namespace hullopt::app {
 
@@ -32,6 +33,29 @@ void CheckOutputDirCommand(const std::string& dir, const std::string& command) {
     throw io::InputError(dir + ": this folder holds the output of 'hullopt " + earlier +
                          "' (see its config.resolved.yaml); 'hullopt " + command +
                          "' will not write over it: use another --out folder");
+}
+
+void CheckOutputDirConfig(const std::string& dir, const std::string& command, const YAML::Node& resolved) {
+  CheckOutputDirCommand(dir, command);
+  // The campaigns' journal decides about their folders (resume with the same config, start over once the log
+  // is deleted); every other command writes one result, which must not be mixed with another config's files.
+  if (command == "optimize" || command == "explore") return;
+  const std::string path = OutPath(dir, "config.resolved.yaml");
+  std::ifstream in(path);
+  if (!in) return;
+  std::stringstream text;
+  text << in.rdbuf();
+  std::string change;
+  try {
+    change = io::FirstYamlDifference(YAML::Load(text.str()), resolved);
+  } catch (const YAML::Exception& e) {
+    change = "its config.resolved.yaml does not read as YAML (" + std::string(e.what()) + ")";
+  }
+  if (change.empty()) return;
+  throw io::InputError(dir + ": this folder holds the output of 'hullopt " + command +
+                       "' run with a different config (first difference: " + change +
+                       "); a folder holds one config's results: use another --out folder, or delete " + path +
+                       " to let this run replace them");
 }
 
 OutputFolderGuard::OutputFolderGuard(const std::string& dir, const std::string& command,
@@ -61,7 +85,7 @@ OutputFolderGuard::~OutputFolderGuard() = default;
 
 void PrepareOutputDir(const std::string& dir, const std::string& command, const std::string& config_file,
                       const YAML::Node& resolved) {
-  CheckOutputDirCommand(dir, command);
+  CheckOutputDirConfig(dir, command, resolved);
   std::error_code ec;
   std::filesystem::create_directories(dir, ec);
   if (ec) throw io::InputError(dir + ": cannot create output folder: " + ec.message());

@@ -272,6 +272,15 @@ DESC='Table 1 SW1 SWATH: a 10 m/m heave resonance (warning case)'
 { sed -n '/^hull:/,/^speed:/p' configs/davis-holloway-2003/hull09_SW1.yaml
   echo "solver: { sections: 20, panels: 8, frequencies: { range: { quantity: lambda_over_L, from: 0.5, to: 4, count: 30 } } }"; } > "$T/sw1.yaml"
 run sw1_resonance 0 "heave RAO peaks at" "{T}/o51/rao.csv" -- rao "$T/sw1.yaml" --out "$T/o51"
+DESC='trihull at the documented maxima `sections: 400, panels: 100` (cost estimate 14 GiB)'
+{ sed -n '/^hull:/,/^water:/p' configs/davis-holloway-2003/hull12_TRIa.yaml
+  echo "speed: { kn: 40 }"
+  echo "solver: { sections: 400, panels: 100, frequencies: { lambda_over_L: [1.0, 2.0] } }"; } > "$T/tri_max.yaml"
+run cost_refused 1 "exceeds the limit of 8 GiB: solver.sections = 400 and solver.panels = 100 drive it" - -- rao "$T/tri_max.yaml" --out "$T/o52"
+DESC='rao into a folder written by rao with another config'
+"$BIN" rao "$T/sw1.yaml" --out "$T/o53" > /dev/null 2>&1
+sed 's/sections: 20/sections: 24/' "$T/sw1.yaml" > "$T/sw1_24.yaml"
+run other_config 1 "run with a different config (first difference: key 'solver.sections': '20' before, now '24')" - -- rao "$T/sw1_24.yaml" --out "$T/o53"
 
 # Not a row: without a mass block, hydrostatics.json's KG is the documented default, the draught.
 w nomass "hull: { parametric: { $P } }"

@@ -13,7 +13,10 @@ test -f "$tmp/prefix/lib/cmake/hullopt/hulloptConfig.cmake"
 if [ -d "$tmp/prefix/include/io" ] || [ -d "$tmp/prefix/include/app" ]; then
   echo "private headers installed"; exit 1
 fi
-cmake -S examples/library -B "$tmp/build" -DCMAKE_PREFIX_PATH="$tmp/prefix" -DCMAKE_BUILD_TYPE=Release \
+# A sanitized build (HULLOPT_SANITIZE) installs instrumented static libraries: the consumer links the runtimes.
+extra=()
+grep -q '^HULLOPT_SANITIZE:BOOL=ON' "$build_dir/CMakeCache.txt" && extra=(-DCMAKE_EXE_LINKER_FLAGS=-fsanitize=address,undefined)
+cmake -S examples/library -B "$tmp/build" -DCMAKE_PREFIX_PATH="$tmp/prefix" -DCMAKE_BUILD_TYPE=Release "${extra[@]}" \
   > "$tmp/configure.log" 2>&1 || { cat "$tmp/configure.log"; exit 1; }
 cmake --build "$tmp/build" -j2 > "$tmp/build.log" 2>&1 || { cat "$tmp/build.log"; exit 1; }
 out=$("$tmp/build/npl5b_msi")
