@@ -118,13 +118,7 @@ static void BM_TrialDesignSetup(benchmark::State& state) {
   io::YamlMap root = io::YamlMap::LoadFile(kConfig);
   io::DesignConfig c;
   io::LoadDesignCase(root, kConfig, "design", true, &c);
-  eval::DesignBasis basis;
-  basis.config_file = kConfig;
-  basis.variables = c.hull.design;
-  basis.attitude = c.hull.attitude;
-  basis.water = c.water;
-  basis.speed = c.speed;
-  basis.solver = c.solver;
+  const eval::DesignBasis basis = io::TrialBasis(c, kConfig);
   const auto fields = eval::TrialFields({"L_over_B", "B_over_T", "Cp", "LCF_pct_L"});
   for (auto _ : state) benchmark::DoNotOptimize(eval::BuildTrialDesign(basis, fields, kStart));
 }

@@ -34,4 +34,16 @@ eval::DesignCase LoadDesignCase(YamlMap& root, const std::string& config_file, c
   return d;
 }
 
+eval::DesignBasis TrialBasis(const DesignConfig& c, const std::string& config_file) {
+  eval::DesignBasis b;
+  b.config_file = config_file;
+  b.variables = c.hull.design;
+  b.attitude = c.hull.attitude;
+  b.water = c.water;
+  b.speed = c.speed;
+  b.solver = c.solver;
+  b.has_frequencies = c.has_frequencies;
+  return b;
+}
+
 }  // namespace hullopt::io

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "evaluation/design_case.h"
+#include "evaluation/trial_design.h"
 #include "io/hull_config.h"
 #include "io/speed_config.h"
 #include "io/yaml_map.h"
@@ -25,5 +26,8 @@ struct DesignConfig {
 /// are InputError naming the file, key and rule. `config` (optional) receives the options read.
 eval::DesignCase LoadDesignCase(YamlMap& root, const std::string& config_file, const std::string& name,
                                 bool read_speed = true, DesignConfig* config = nullptr);
+
+/// The base of campaign trials from the options of a design read from config_file (mass rule at its defaults).
+eval::DesignBasis TrialBasis(const DesignConfig& config, const std::string& config_file);
 
 }  // namespace hullopt::io

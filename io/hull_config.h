@@ -36,7 +36,6 @@ struct HullOptions {
   double length_m = 0.0;         ///< [m] waterline length override for file sources (0 = from the stations)
   /// Running attitude (sinkage, trim; the pivot is set by ApplyHullAttitude). Even keel by default.
   hull::RunningAttitude attitude;
-  bool IsValid(std::string* error) const;
 };
 
 /// Parses the `hull:` map of root; water gives the density used for a parametric displacement. Throws

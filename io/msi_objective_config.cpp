@@ -33,14 +33,13 @@ std::unique_ptr<opt::Evaluator> ReadMsiObjective(YamlMap& root, YamlMap& objecti
   }
   objective.Finish();
   o.evaluation.msi = ReadMsiOptions(root);
-  eval::DesignBasis basis;
-  basis.config_file = root.file();
   YamlMap mass = root.MapOrEmpty("mass");
-  basis.kyy_over_L = mass.Number("kyy_over_L", 0.25);
-  basis.kg_over_T = mass.Number("kg_over_T", 1.0);
-  if (!(basis.kyy_over_L > 0.05 && basis.kyy_over_L < 0.5)) mass.Fail("kyy_over_L", "must be within 0.05..0.5");
-  if (!(basis.kg_over_T > 0 && basis.kg_over_T < 10)) mass.Fail("kg_over_T", "must be within 0..10");
+  const double kyy_over_L = mass.Number("kyy_over_L", 0.25);
+  const double kg_over_T = mass.Number("kg_over_T", 1.0);
+  if (!(kyy_over_L > 0.05 && kyy_over_L < 0.5)) mass.Fail("kyy_over_L", "must be within 0.05..0.5");
+  if (!(kg_over_T > 0 && kg_over_T < 10)) mass.Fail("kg_over_T", "must be within 0..10");
   mass.Finish();
+  eval::DesignBasis basis;
   o.resistance = ParseResistanceConfig(root, false).options;
   const YAML::Node& raw = root.raw();
   if (!raw["hull"] || !raw["hull"]["parametric"])
@@ -54,13 +53,10 @@ std::unique_ptr<opt::Evaluator> ReadMsiObjective(YamlMap& root, YamlMap& objecti
     DesignConfig c;
     LoadDesignCase(check, root.file(), "base design", true, &c);
     check.Finish();
-    basis.variables = c.hull.design;
-    basis.attitude = c.hull.attitude;
-    basis.water = c.water;
-    basis.speed = c.speed;
-    basis.solver = c.solver;
-    basis.has_frequencies = c.has_frequencies;
+    basis = TrialBasis(c, root.file());
   }
+  basis.kyy_over_L = kyy_over_L;
+  basis.kg_over_T = kg_over_T;
   // Record the physics blocks in the resolved config through the strict reader too.
   for (const char* k : {"hull", "water", "speed", "solver"}) root.Skip(k);
   std::vector<std::string> names;

@@ -5,11 +5,6 @@
 
 namespace hullopt::sk {
 
-double ForceFromMomentum(const std::vector<double>& I, int n, double dt) {
-  auto at = [&](int k) { return k >= 0 ? I[k] : 0.0; };
-  return (3.0 * at(n) - 4.0 * at(n - 1) + at(n - 2)) / (2.0 * dt);
-}
-
 StripMarcher::StripMarcher(const StripOperators& ops) : ops_(ops) { PrepareHistory(); }
 
 void StripMarcher::PrepareHistory() {

@@ -57,7 +57,4 @@ class StripMarcher {
   std::array<double, 2> earlier_momentum_{};  // pressure form: Σ_{k<=n−s} PressureMomentum(s, n, k) σ_k
 };
 
-/// Sectional force from the momentum history: f_n = (3 I_n − 4 I_{n−1} + I_{n−2})/(2 dt), I_{<0} = 0.
-double ForceFromMomentum(const std::vector<double>& momentum, int n, double dt);
-
 }  // namespace hullopt::sk

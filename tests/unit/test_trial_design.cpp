@@ -24,15 +24,7 @@ eval::DesignBasis Basis() {
   io::YamlMap root(YAML::Load(kBase), "", "base.yaml", YAML::Node(YAML::NodeType::Map));
   io::DesignConfig c;
   io::LoadDesignCase(root, "base.yaml", "design", true, &c);
-  eval::DesignBasis b;
-  b.config_file = "base.yaml";
-  b.variables = c.hull.design;
-  b.attitude = c.hull.attitude;
-  b.water = c.water;
-  b.speed = c.speed;
-  b.solver = c.solver;
-  b.has_frequencies = c.has_frequencies;
-  return b;
+  return io::TrialBasis(c, "base.yaml");
 }
 
 // The same design through a config: the values written into the YAML text, the campaign's mass rule after.
