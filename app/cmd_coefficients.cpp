@@ -7,7 +7,7 @@
 #include <sstream>
 
 #include "app/commands.h"
-#include "app/design_case.h"
+#include "io/design_config.h"
 #include "app/output_dir.h"
 #include "io/coefficients_csv_writer.h"
 #include "io/coefficients_plot.h"
@@ -22,7 +22,7 @@ namespace {
 void RunCoefficients(const std::string& config_file, const std::string& out_dir) {
   auto root = io::YamlMap::LoadFile(config_file);
   const std::string name = std::filesystem::path(config_file).stem().string();
-  DesignCase d = LoadDesignCase(root, config_file, name);
+  eval::DesignCase d = io::LoadDesignCase(root, config_file, name);
   if (!d.has_frequencies) root.Map("solver").Fail("frequencies", "required: the frequencies of the coefficients");
   // compare: measured points to draw over the computed curves (io/measured_coefficients_csv.h).
   std::vector<io::MeasuredCoefficientRow> heave, pitch;
@@ -44,15 +44,15 @@ void RunCoefficients(const std::string& config_file, const std::string& out_dir)
   root.Finish();
   const double L = d.hydrostatics.L_m, g = d.water.g_m_s2;
   const auto omega = sk::WaveFrequencies(d.solver.frequencies, d.speed_m_s, g, L);
-  const sk::CoefficientTable t = ComputeDesignCoefficients(d, omega);
+  const sk::CoefficientTable t = eval::ComputeDesignCoefficients(d, omega);
   for (const auto& w : t.warnings) std::fprintf(stderr, "hullopt: warning: hull '%s': %s\n", name.c_str(), w.c_str());
   PrepareOutputDir(out_dir, "coefficients", config_file, root.resolved());
   const double Fn = d.speed_m_s / std::sqrt(g * L);
   std::ostringstream fn;
-  fn << "speed U = " << d.speed_m_s << " m/s (Fn " << Fn << "), method " << d.solver.method << ", "
-     << d.solver.sections << " sections x " << d.solver.panels << " panels, Cs = " << d.solver.cs
-     << (d.solver.interaction ? "" : ", bodies without interaction")
-     << (d.solver.sectional_force == "pressure" ? ", sectional force: pressure form" : "");
+  fn << "speed U = " << d.speed_m_s << " m/s (Fn " << Fn << "), method " << eval::MethodName(d.solver.rao.method) << ", "
+     << d.solver.rao.sections << " sections x " << d.solver.rao.panels << " panels, Cs = " << d.solver.cs()
+     << (d.solver.rao.interaction ? "" : ", bodies without interaction")
+     << (d.solver.sectional_force == sk::SectionalForce::kPressure ? ", sectional force: pressure form" : "");
   std::vector<std::string> notes = {"hull: " + name, fn.str()};
   for (const auto& w : t.warnings) notes.push_back("warning: " + w);
   try {
@@ -61,7 +61,7 @@ void RunCoefficients(const std::string& config_file, const std::string& out_dir)
     throw io::InputError("hull '" + name + "': " + e.what());
   }
   const std::string curve =
-      d.solver.method == "strip_theory_stf" ? "strip theory (STF type)" : "time-domain strip";
+      d.solver.rao.method == sk::RaoSolverOptions::Method::kStripTheory ? "strip theory (STF type)" : "time-domain strip";
   io::MeasuredCoefficientPoints m =
       io::MeasuredPointsForSpeed(heave, pitch, loads, Fn, trim, d.speed_m_s, g, L);
   const bool any = !m.heave_x.empty() || !m.pitch_x.empty() || !m.load_x.empty();

@@ -26,21 +26,24 @@
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
+#include <optional>
 #include <stdexcept>
 
 #include "app/commands.h"
-#include "app/design_case.h"
+#include "io/design_config.h"
 #include "app/output_dir.h"
 #include "io/config_path.h"
 #include "io/evaluation_report.h"
 #include "io/input_error.h"
 #include "io/rao_table_csv.h"
+#include "io/resolution_check_config.h"
 #include "io/seas_config.h"
 #include "io/operability_config.h"
 #include "io/operability_output.h"
 #include "io/yaml_map.h"
 #include "seakeeping/motions/rao_checks.h"
 #include "seas/design_evaluation.h"
+#include "seas/resolution_check.h"
 
 namespace hullopt::app {
 namespace {
@@ -57,14 +60,18 @@ std::string DefaultName(const std::string& csv) {
 struct DesignInput {
   io::EvaluatedDesign design;
   std::string where;  // config location for messages
+  std::optional<eval::DesignCase> computed;  // the design when its RAOs were computed here (for the resolution check)
+  double cs_override = -1.0;
 };
 
 // A design computed by the strip solver from its own config (root = that config's map).
 void ComputeDesign(io::YamlMap& root, const std::string& file, DesignInput* in, double cs_override) {
-  const DesignCase dc = LoadDesignCase(root, file, in->design.name);
+  const eval::DesignCase dc = io::LoadDesignCase(root, file, in->design.name);
   root.Finish();
-  in->design.rao = ComputeDesignRaos(dc, SeaFrequencies(dc), cs_override);
-  in->design.frequency_advice = SeaFrequencyAdvice(dc, file);
+  in->design.rao = eval::ComputeDesignRaos(dc, eval::SeaFrequencies(dc), cs_override);
+  in->computed = dc;
+  in->cs_override = cs_override;
+  in->design.frequency_advice = eval::SeaFrequencyAdvice(dc, file);
   in->design.hull = dc.Extent();
   for (const auto& [k, v] : dc.Parameters()) in->design.parameters.emplace(k, v);
 }
@@ -115,6 +122,33 @@ DesignInput ReadDesign(io::YamlMap& m, const std::string& config_file, double g,
   return in;
 }
 
+// Re-runs a computed design at factor x its sections and panels on the same frequencies and seas; a design
+// that moves by more than the tolerances carries the warning in its RAO table, and so in every output.
+void CheckResolution(const io::ResolutionCheckConfig& check, const std::vector<sk::WaveSpectrum>& spectra,
+                     const std::vector<sk::PassengerPosition>& points, const sk::EvaluationOptions& options,
+                     DesignInput* in) {
+  eval::DesignCase fine = *in->computed;
+  fine.solver.sections *= check.factor;
+  fine.solver.panels *= check.factor;
+  if (fine.solver.sections > 400 || fine.solver.panels > 100)
+    throw io::InputError(in->where + ": design '" + in->design.name + "': resolution_check.factor " +
+                         std::to_string(check.factor) + " asks for " + std::to_string(fine.solver.sections) +
+                         " sections x " + std::to_string(fine.solver.panels) +
+                         " panels, beyond the solver's 400 x 100");
+  const sk::RaoTable fine_rao = eval::ComputeDesignRaos(fine, in->design.rao.omega_rad_s, in->cs_override);
+  sk::DesignEvaluation fine_eval;
+  try {
+    fine_eval = sk::EvaluateDesign(fine_rao, in->design.hull, spectra, points, options);
+  } catch (const std::exception& e) {
+    throw io::InputError(in->where + ": design '" + in->design.name + "' at the check's resolution: " + e.what());
+  }
+  in->design.resolution = sk::CompareResolutions(in->design.rao, fine_rao, in->design.evaluation, fine_eval,
+                                                 in->computed->solver.sections, in->computed->solver.panels,
+                                                 fine.solver.sections, fine.solver.panels, check.options);
+  if (!in->design.resolution->converged)
+    in->design.rao.warnings.push_back("resolution check: " + in->design.resolution->warning);
+}
+
 double ReadSpeedCheck(io::YamlMap& root) {
   if (!root.Has("speed")) return NAN;
   io::YamlMap s = root.Map("speed");
@@ -150,11 +184,12 @@ void Run(const std::string& config_file, const std::string& out_dir) {
     DesignInput in;
     in.where = root.Where("hull");
     in.design.name = std::filesystem::path(config_file).stem().string();
-    const DesignCase dc = LoadDesignCase(root, config_file, in.design.name);
-    in.design.rao = ComputeDesignRaos(dc, SeaFrequencies(dc));
-    in.design.frequency_advice = SeaFrequencyAdvice(dc, config_file);
+    const eval::DesignCase dc = io::LoadDesignCase(root, config_file, in.design.name);
+    in.design.rao = eval::ComputeDesignRaos(dc, eval::SeaFrequencies(dc));
+    in.design.frequency_advice = eval::SeaFrequencyAdvice(dc, config_file);
     in.design.hull = dc.Extent();
     in.design.parameters = dc.Parameters();
+    in.computed = dc;
     inputs.push_back(in);
   } else if (single) {
     inputs.push_back(ReadDesign(root, config_file, g, true));
@@ -188,6 +223,7 @@ void Run(const std::string& config_file, const std::string& out_dir) {
   const std::vector<sk::PassengerPosition> points = io::ReadPassengerPoints(positions, nullptr);
   positions.Finish();
   const io::OperabilityConfig operability = io::ParseOperability(root, config_file, points);
+  const io::ResolutionCheckConfig resolution = io::ReadResolutionCheck(root);
   io::YamlMap report_map = root.MapOrEmpty("report");
   io::EvaluationReportOptions report;
   report.plots = report_map.Boolean("plots", true);
@@ -212,6 +248,9 @@ void Run(const std::string& config_file, const std::string& out_dir) {
     } catch (const std::domain_error& e) {
       throw io::InputError(in.where + ": design '" + in.design.name + "': " + e.what());
     }
+    if (resolution.enabled && in.computed) CheckResolution(resolution, spectra, points, options, &in);
+    if (resolution.enabled && !in.computed)
+      in.design.rao.warnings.push_back("resolution check not made: RAOs read from a file (give the design's config)");
     designs.push_back(in.design);
   }
 

@@ -38,7 +38,7 @@ void RunRao(const std::string& config_file, const std::string& out_dir) {
   const std::string kernel_kind =
       solver_map.Choice("kernel", {"transient_green", "impulsive"}, "transient_green");
   const io::SolverConfig sc = io::ParseSolverConfig(solver_map);
-  if (kernel_kind == "impulsive" && sc.sectional_force == "pressure")
+  if (kernel_kind == "impulsive" && sc.sectional_force == sk::SectionalForce::kPressure)
     solver_map.Fail("sectional_force", "the impulsive stand-in kernel has the momentum form only (use kernel: "
                                        "transient_green)");
   hull::Hydrostatics hs;  // at rest: L for Fn and the wavelengths, mass defaults
@@ -55,9 +55,9 @@ void RunRao(const std::string& config_file, const std::string& out_dir) {
   try {
     // Sections first: a section that does not reach the waterline is named with its body and station.
     sk::StripGeometryOptions geo;
-    geo.sections = sc.sections;
-    geo.panels = sc.panels;
-    geo.layout = sc.Layout();
+    geo.sections = sc.rao.sections;
+    geo.panels = sc.rao.panels;
+    geo.layout = sc.rao.layout;
     sk::StripKernelGeometry(running, geo, 1.0, water.rho_kg_m3, water.g_m_s2);
     hull::ComputeHydrostatics(running, water.rho_kg_m3);
   } catch (const std::exception& e) {
@@ -66,8 +66,8 @@ void RunRao(const std::string& config_file, const std::string& out_dir) {
   const double U = speed.MetresPerSecond(hs.L_m, water.g_m_s2);
   const sk::StripKernelBuilder builder = kernel_kind == "impulsive"
                                              ? sk::StripKernelBuilder(sk::FillImpulsiveStripKernel)
-                                             : sk::TransientGreenKernelBuilder(sc.Force());
-  const sk::RaoSolverOptions o = io::RaoOptions(sc, hull_name, sc.cs);
+                                             : sk::TransientGreenKernelBuilder(sc.sectional_force);
+  const sk::RaoSolverOptions o = eval::RaoOptions(sc, hull_name, sc.cs());
   const auto omega = sk::WaveFrequencies(sc.frequencies, U, water.g_m_s2, hs.L_m);
   sk::RaoTable t;
   try {
@@ -78,16 +78,16 @@ void RunRao(const std::string& config_file, const std::string& out_dir) {
     throw io::InputError(std::string("cannot compute RAOs: ") + e.what());
   }
   t.warnings.insert(t.warnings.begin(), input_warnings.begin(), input_warnings.end());
-  if (sc.method == "time_domain_strip")
+  if (sc.rao.method == sk::RaoSolverOptions::Method::kTimeDomainStrip)
     for (auto& w : sk::ValidityWarnings(U, hs.L_m, water.g_m_s2, t.omega_rad_s)) t.warnings.push_back(std::move(w));
   for (const auto& w : t.warnings) std::fprintf(stderr, "hullopt: warning: hull '%s': %s\n", hull_name.c_str(), w.c_str());
   for (const auto& a : hull.adjustments) std::fprintf(stderr, "hullopt: note: hull '%s': %s\n", hull_name.c_str(), a.c_str());
   PrepareOutputDir(out_dir, "rao", config_file, root.resolved());
   std::ostringstream fn;
-  fn << "speed U = " << U << " m/s (Fn " << U / std::sqrt(water.g_m_s2 * hs.L_m) << "), method " << sc.method
-     << ", kernel " << kernel_kind << ", path " << sc.path << ", " << sc.sections << " sections x "
-     << sc.panels << " panels, Cs = " << sc.cs << (sc.interaction ? "" : ", bodies without interaction")
-     << (sc.sectional_force == "pressure" ? ", sectional force: pressure form" : "");
+  fn << "speed U = " << U << " m/s (Fn " << U / std::sqrt(water.g_m_s2 * hs.L_m) << "), method " << eval::MethodName(sc.rao.method)
+     << ", kernel " << kernel_kind << ", path " << eval::PathName(sc.rao.path) << ", " << sc.rao.sections << " sections x "
+     << sc.rao.panels << " panels, Cs = " << sc.cs() << (sc.rao.interaction ? "" : ", bodies without interaction")
+     << (sc.sectional_force == sk::SectionalForce::kPressure ? ", sectional force: pressure form" : "");
   if (!hull_opts.attitude.IsEvenKeel())
     fn << ", running attitude: sinkage " << hull_opts.attitude.sinkage_m << " m (+ down), trim "
        << hull_opts.attitude.trim_deg << " deg (+ bow up) at x = " << mass.lcg_m_from_ap << " m";
@@ -100,7 +100,7 @@ void RunRao(const std::string& config_file, const std::string& out_dir) {
     throw io::InputError(std::string("hull '") + hull_name + "': " + e.what());
   }
   const std::string curve =
-      sc.method == "strip_theory_stf" ? "strip theory (STF type)" : "time-domain strip (" + kernel_kind + ")";
+      sc.rao.method == sk::RaoSolverOptions::Method::kStripTheory ? "strip theory (STF type)" : "time-domain strip (" + kernel_kind + ")";
   io::WriteSvg(io::RaoFigure({t}, {curve}, hs.L_m, "RAOs: " + fn.str()), OutPath(out_dir, "rao.svg"));
   // One line for the console: where the heave and pitch peaks are (parabola through the largest sample).
   std::vector<double> lam, heave, pitch;

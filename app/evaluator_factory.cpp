@@ -1,6 +1,6 @@
 #include "app/evaluator_factory.h"
 
-#include "app/msi_evaluator.h"
+#include "io/msi_objective_config.h"
 #include "io/input_error.h"
 #include "optimizer/analytic_objectives.h"
 
@@ -9,7 +9,7 @@ namespace hullopt::app {
 std::unique_ptr<opt::Evaluator> MakeEvaluator(io::YamlMap& root, io::YamlMap& block,
                                               const opt::CampaignDefinition& campaign) {
   io::YamlMap objective = block.MapOrEmpty("objective");
-  if (!objective.Has("analytic")) return MakeMsiEvaluator(root, objective, campaign);
+  if (!objective.Has("analytic")) return io::ReadMsiObjective(root, objective, campaign);
   opt::AnalyticObjectiveOptions o;
   o.function = objective.Choice("analytic", opt::AnalyticFunctionNames());
   o.dimension = static_cast<int>(campaign.variables.size());

@@ -142,6 +142,23 @@ nlohmann::json EvaluationSummaryJson(const std::vector<EvaluatedDesign>& designs
       jd["seas"].push_back(js);
     }
     jd["mean_msi_pct_over_seas"] = mean_msi;
+    if (d.resolution) {
+      const sk::ResolutionCheck& r = *d.resolution;
+      jd["resolution_check"] = {{"sections", r.sections},
+                                {"panels", r.panels},
+                                {"fine_sections", r.fine_sections},
+                                {"fine_panels", r.fine_panels},
+                                {"heave_peak", r.heave_peak},
+                                {"heave_peak_fine", r.heave_peak_fine},
+                                {"heave_peak_change", r.heave_peak_change},
+                                {"pitch_peak", r.pitch_peak},
+                                {"pitch_peak_fine", r.pitch_peak_fine},
+                                {"pitch_peak_change", r.pitch_peak_change},
+                                {"max_msi_change_pct", r.max_msi_change_pct},
+                                {"mean_msi_pct", r.mean_msi_pct},
+                                {"fine_mean_msi_pct", r.fine_mean_msi_pct},
+                                {"converged", r.converged}};
+    }
     j["designs"].push_back(jd);
   }
   j["warnings"] = warnings;

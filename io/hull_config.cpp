@@ -3,7 +3,7 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "io/hull_plausibility.h"
+#include "evaluation/hull_plausibility.h"
 #include "io/input_limits.h"
 #include "io/offsets_csv.h"
 #include "io/stl_reader.h"
@@ -26,38 +26,20 @@ hull::DesignVariables ParseParametric(YamlMap& p, const WaterOptions& water) {
   d.section_style = hull::ParseSectionStyle(
       p.Choice("section_style", {"round_bilge", "hard_chine", "swath_bulb"}, default_style));
   d.rho_kg_m3 = water.rho_kg_m3;
-  d.displacement_t = p.Number("displacement_t");
-  d.L_over_B = p.Number("L_over_B");
-  d.B_over_T = p.Number("B_over_T");
-  d.Cb = p.Number("Cb");
-  d.Cp = p.Number("Cp");
-  d.Cwp = p.Number("Cwp");
-  d.LCB_pct_L = p.Number("LCB_pct_L");
-  d.LCF_pct_L = p.Number("LCF_pct_L");
-  d.transom_immersion = p.Number("transom_immersion", d.transom_immersion);
-  d.transom_beam_ratio = p.Number("transom_beam_ratio", d.transom_beam_ratio);
-  d.keel_rise = p.Number("keel_rise", d.keel_rise);
-  d.spacing_over_L = p.Number("spacing_over_L", d.spacing_over_L);
-  d.strut_ratio = p.Number("strut_ratio", d.strut_ratio);
-  d.bulb_height_ratio = p.Number("bulb_height_ratio", d.bulb_height_ratio);
-  d.outrigger_length_ratio = p.Number("outrigger_length_ratio", d.outrigger_length_ratio);
-  d.outrigger_L_over_B = p.Number("outrigger_L_over_B", d.outrigger_L_over_B);
-  d.outrigger_B_over_T = p.Number("outrigger_B_over_T", d.outrigger_B_over_T);
-  d.outrigger_offset_over_L = p.Number("outrigger_offset_over_L", d.outrigger_offset_over_L);
-  d.freeboard_over_T = p.Number("freeboard_over_T", d.freeboard_over_T);
+  for (const auto& f : hull::DesignVariableFields()) {
+    if (!f.parametric_key) continue;
+    d.*f.field = f.required ? p.Number(f.name) : p.Number(f.name, d.*f.field);
+  }
   d.stations = p.Integer("stations", d.stations);
   d.section_points = p.Integer("section_points", d.section_points);
   d.on_infeasible = p.Choice("on_infeasible", {"refuse", "nearest"}, "refuse") == "nearest"
                         ? hull::OnInfeasible::kNearest
                         : hull::OnInfeasible::kRefuse;
   p.Finish();
-  std::string error;
-  if (!d.IsValid(&error)) {
-    // error is "name = value: rule"; point at the key when it is one of this map's keys.
-    const std::string name = error.substr(0, error.find(' '));
-    const std::string rule = error.substr(error.find(": ") + 2);
-    if (p.Has(name)) p.Fail(name, rule);
-    throw InputError(p.Where(p.Has("Cb") ? "Cb" : "type") + ": " + error);
+  if (const auto bad = d.FirstInvalid()) {
+    // Point at the key when the rule is about one of this map's keys.
+    if (p.Has(bad->field)) p.Fail(bad->field, bad->rule);
+    throw InputError(p.Where(p.Has("Cb") ? "Cb" : "type") + ": " + bad->Message());
   }
   return d;
 }
@@ -76,23 +58,6 @@ hull::RunningAttitude ParseAttitude(YamlMap& h) {
 }
 
 }  // namespace
-
-bool HullOptions::IsValid(std::string* error) const {
-  if (source == Source::kParametric) return design.IsValid(error);
-  auto fail = [&](const std::string& m) {
-    if (error) *error = m;
-    return false;
-  };
-  if (file.empty()) return fail("file: must name an offsets CSV or STL file");
-  if (!(draught_m > 0.0)) return fail("draught_m = " + std::to_string(draught_m) + ": must be > 0");
-  if (hulls != 1 && hulls != 2) return fail("hulls = " + std::to_string(hulls) + ": must be 1 or 2");
-  if (hulls == 2 && !(spacing_m > 0.0))
-    return fail("spacing_m = " + std::to_string(spacing_m) + ": must be > 0 for two hulls");
-  if (stations != 0 && stations < 3)
-    return fail("stations = " + std::to_string(stations) + ": must be 0 (keep) or >= 3");
-  if (length_m < 0.0) return fail("length_m: must be >= 0");
-  return true;
-}
 
 HullOptions ParseHullConfig(YamlMap& root, const WaterOptions& water) {
   YamlMap h = root.Map("hull");
@@ -154,7 +119,7 @@ hull::HullForm LoadHull(const HullOptions& o, const std::string& config_file, st
     } catch (const std::logic_error& e) {  // invalid_argument and domain_error
       throw InputError(config_file + ": key 'hull.parametric': " + e.what());
     }
-    keep(CheckHull(h, config_file + ": key 'hull.parametric'"));
+    keep(eval::CheckHull(h, config_file + ": key 'hull.parametric'"));
     return h;
   }
   hull::HullForm h;
@@ -172,7 +137,7 @@ hull::HullForm LoadHull(const HullOptions& o, const std::string& config_file, st
   body.y_centre_m = o.hulls == 2 ? 0.5 * o.spacing_m : 0.0;
   h.bodies = {body};
   if (o.stations > 0 && o.source == HullOptions::Source::kOffsetsCsv) h = hull::Resample(h, o.stations);
-  keep(CheckHull(h, o.file));
+  keep(eval::CheckHull(h, o.file));
   return h;
 }
 

@@ -1,14 +1,10 @@
 #pragma once
-#include <stdexcept>
-#include <string>
+// A malformed input: the one-line message names the file, line, key and rule. The same type as the
+// evaluation layer's refusals, so a caller catches both in one place.
+#include "evaluation/input_error.h"
 
 namespace hullopt::io {
 
-/// Bad user input (config, data file, command line). The message is one line that names the file, line or key
-/// and the rule that was broken; the app prints it and exits non-zero.
-class InputError : public std::runtime_error {
- public:
-  using std::runtime_error::runtime_error;
-};
+using InputError = eval::InputError;
 
 }  // namespace hullopt::io

@@ -57,26 +57,37 @@ sk::FrequencySpec ParseFrequencies(YamlMap& f) {
 }  // namespace
 
 SolverConfig ParseSolverConfig(YamlMap& s, bool frequencies_required) {
+  using Method = sk::RaoSolverOptions::Method;
   SolverConfig c;
-  c.method = s.Choice("method", {"time_domain_strip", "strip_theory_stf"}, c.method);
-  c.sections = s.Integer("sections", c.sections);
-  if (c.sections < 2 || c.sections > kMaxSections)
+  sk::RaoSolverOptions& o = c.rao;
+  o.method = s.Choice("method", {"time_domain_strip", "strip_theory_stf"}, "time_domain_strip") == "strip_theory_stf"
+                 ? Method::kStripTheory
+                 : Method::kTimeDomainStrip;
+  o.sections = s.Integer("sections", o.sections);
+  if (o.sections < 2 || o.sections > kMaxSections)
     s.Fail("sections", "must lie in [2, " + std::to_string(kMaxSections) + "] (the paper uses 40)");
-  c.panels = s.Integer("panels", c.panels);
-  if (c.panels < 4 || c.panels % 2 != 0 || c.panels > kMaxPanels)
+  o.panels = s.Integer("panels", o.panels);
+  if (o.panels < 4 || o.panels % 2 != 0 || o.panels > kMaxPanels)
     s.Fail("panels", "must be even and in [4, " + std::to_string(kMaxPanels) + "] (the paper uses 14)");
-  c.cs = s.Number("Cs", c.cs);
-  if (c.cs < 0.0) s.Fail("Cs", "must be >= 0 (the paper's values are 0 to 0.15)");
-  c.hydrodynamic_fraction = s.Number("hydrodynamic_fraction", c.hydrodynamic_fraction);
-  if (!(c.hydrodynamic_fraction > 0.0 && c.hydrodynamic_fraction <= 1.0))
+  o.motion.damping_cs = s.Number("Cs", o.motion.damping_cs);
+  if (o.motion.damping_cs < 0.0) s.Fail("Cs", "must be >= 0 (the paper's values are 0 to 0.15)");
+  double& fraction = o.marching.hydrodynamic_fraction;
+  fraction = s.Number("hydrodynamic_fraction", fraction);
+  if (!(fraction > 0.0 && fraction <= 1.0))
     s.Fail("hydrodynamic_fraction", "must satisfy 0 < fraction <= 1 (the paper uses 0.2 to 0.4)");
-  c.path = s.Choice("path", {"periodic", "time_marching"}, c.path);
-  c.interaction = s.Boolean("interaction", c.interaction);
-  c.stations = s.Choice("stations", {"cell_faces", "cell_midpoints"}, c.stations);
-  if (c.stations == "cell_faces" && c.sections < 3)
+  o.path = s.Choice("path", {"periodic", "time_marching"}, "periodic") == "periodic"
+               ? sk::RaoSolverOptions::Path::kPeriodic
+               : sk::RaoSolverOptions::Path::kTimeMarching;
+  o.interaction = s.Boolean("interaction", o.interaction);
+  o.layout = s.Choice("stations", {"cell_faces", "cell_midpoints"}, "cell_faces") == "cell_midpoints"
+                 ? sk::StationLayout::kCellMidpoints
+                 : sk::StationLayout::kCellFaces;
+  if (o.layout == sk::StationLayout::kCellFaces && o.sections < 3)
     s.Fail("sections", "must be >= 3 with stations: cell_faces");
-  c.sectional_force = s.Choice("sectional_force", {"momentum", "pressure"}, c.sectional_force);
-  if (c.sectional_force == "pressure" && c.method != "time_domain_strip")
+  c.sectional_force = s.Choice("sectional_force", {"momentum", "pressure"}, "momentum") == "pressure"
+                          ? sk::SectionalForce::kPressure
+                          : sk::SectionalForce::kMomentum;
+  if (c.sectional_force == sk::SectionalForce::kPressure && o.method != Method::kTimeDomainStrip)
     s.Fail("sectional_force", "pressure applies to method: time_domain_strip only (strip_theory_stf has its own "
                               "frequency-domain sectional force)");
   if (frequencies_required || s.Has("frequencies")) {
@@ -85,21 +96,6 @@ SolverConfig ParseSolverConfig(YamlMap& s, bool frequencies_required) {
   }
   s.Finish();
   return c;
-}
-
-sk::RaoSolverOptions RaoOptions(const SolverConfig& c, const std::string& hull_name, double cs) {
-  sk::RaoSolverOptions o;
-  o.sections = c.sections;
-  o.panels = c.panels;
-  o.interaction = c.interaction;
-  o.layout = c.Layout();
-  o.method = c.method == "strip_theory_stf" ? sk::RaoSolverOptions::Method::kStripTheory
-                                            : sk::RaoSolverOptions::Method::kTimeDomainStrip;
-  o.path = c.path == "periodic" ? sk::RaoSolverOptions::Path::kPeriodic : sk::RaoSolverOptions::Path::kTimeMarching;
-  o.motion.damping_cs = cs;
-  o.motion.hull_name = hull_name;
-  o.marching.hydrodynamic_fraction = c.hydrodynamic_fraction;
-  return o;
 }
 
 hull::MassProperties ParseMassConfig(YamlMap& m, const hull::Hydrostatics& hs,

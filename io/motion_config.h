@@ -23,6 +23,7 @@
 //                                    # error (docs/bad-inputs.md)
 #include <string>
 
+#include "evaluation/solver_settings.h"
 #include "io/yaml_map.h"
 #include "parametric_hull/hull_form.h"
 #include "parametric_hull/hydrostatics.h"
@@ -33,36 +34,13 @@
 
 namespace hullopt::io {
 
-struct SolverConfig {
-  std::string method = "time_domain_strip";  ///< time_domain_strip | strip_theory_stf
-  int sections = 40;
-  int panels = 14;
-  double cs = 0.0;                     ///< Cs [-]
-  double hydrodynamic_fraction = 0.2;  ///< [-]
-  std::string path = "periodic";       ///< periodic | time_marching
-  bool interaction = true;
-  /// Strip steps at the cell faces (bow and transom sections included; the default) or the cell midpoints.
-  std::string stations = "cell_faces";
-  /// Sectional force of the time-domain strips: the strip momentum's rate of change (default) or the paper's
-  /// fixed-point pressure integral (sk::SectionalForce).
-  std::string sectional_force = "momentum";
-  sk::FrequencySpec frequencies;
-  sk::StationLayout Layout() const {
-    return stations == "cell_midpoints" ? sk::StationLayout::kCellMidpoints : sk::StationLayout::kCellFaces;
-  }
-  sk::SectionalForce Force() const {
-    return sectional_force == "pressure" ? sk::SectionalForce::kPressure : sk::SectionalForce::kMomentum;
-  }
-};
+/// The solver section read straight into the solver's own options (enums, not names).
+using SolverConfig = eval::SolverSettings;
 
 /// Reads and validates `solver` (consumes its keys; call solver.Finish() afterwards or let this do it).
 /// Without frequencies_required, `frequencies` may be absent (commands that choose their own grid).
 /// Throws InputError "file:line: key 'solver.x' = v: rule".
 SolverConfig ParseSolverConfig(YamlMap& solver, bool frequencies_required = true);
-
-/// The strip-solver options the config asks for, with the hull's name for messages and the damping
-/// coefficient cs (the config's `Cs`, or a trial value of a calibration).
-sk::RaoSolverOptions RaoOptions(const SolverConfig& config, const std::string& hull_name, double cs);
 
 /// Reads `mass` with defaults from the hydrostatics (recorded in the resolved config). Throws InputError for
 /// non-positive mass or radius of gyration, an LCG outside the hull's length, and the refusals of the mass

@@ -3,7 +3,9 @@
 // Table 1), plus the shape choices the generator needs. Coefficients follow hydrostatics.h: those of one
 // demihull for catamarans and SWATHs, of the whole (main hull + outriggers) for the trihull, with L, B, T of
 // the main hull / demihull.
+#include <optional>
 #include <string>
+#include <vector>
 
 namespace hullopt::hull {
 
@@ -26,6 +28,17 @@ std::string ToString(SectionStyle style);
 /// the message offers the nearest feasible combination) or build that nearest combination and record the
 /// change in HullForm::adjustments.
 enum class OnInfeasible { kRefuse, kNearest };
+
+/// A design variable outside its rule: the variable (or the ratio of two, e.g. "Cm = Cb/Cp"), its value and
+/// the rule.
+struct InvalidDesignVariable {
+  std::string field;
+  double value = 0.0;
+  std::string value_text;  ///< the value as written in Message() (a name for section_style)
+  std::string rule;
+  /// "<field> = <value>: <rule>"
+  std::string Message() const { return field + " = " + value_text + ": " + rule; }
+};
 
 struct DesignVariables {
   HullType type = HullType::kCatamaran;
@@ -70,8 +83,27 @@ struct DesignVariables {
   int section_points = 25;        ///< points per section contour below the waterline, >= 8
   OnInfeasible on_infeasible = OnInfeasible::kRefuse;
 
-  /// Checks ranges one by one; on failure writes "<name> = <value>: <rule>" and returns false.
+  /// The first range rule the values break (checked one by one), or none.
+  std::optional<InvalidDesignVariable> FirstInvalid() const;
+  /// As FirstInvalid; on failure writes its Message() and returns false.
   bool IsValid(std::string* error) const;
 };
+
+/// One number of the design variables: its key in a config's hull.parametric map (and a campaign's variable
+/// name), the field it sets and its unit. The one list the config reader, the campaign's variables and the
+/// trial designs of a campaign go through.
+struct DesignVariableField {
+  const char* name;
+  double DesignVariables::*field;
+  const char* unit;       ///< "-" for ratios and coefficients
+  bool required;          ///< a parametric hull must give it (else the default stands)
+  bool parametric_key;    ///< read from hull.parametric (spacing_m is hull.spacing_m)
+  bool campaign_variable; ///< a campaign may vary it (the displacement is held fixed; freeboard is for plots)
+};
+
+/// Every number of DesignVariables in config order.
+const std::vector<DesignVariableField>& DesignVariableFields();
+/// The field of that name, or nullptr.
+const DesignVariableField* FindDesignVariable(const std::string& name);
 
 }  // namespace hullopt::hull

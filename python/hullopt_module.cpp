@@ -16,7 +16,7 @@
 #include <vector>
 
 #include "app/commands.h"
-#include "app/design_case.h"
+#include "io/design_config.h"
 #include "hullopt/hullopt.h"
 #include "io/hull_config.h"
 #include "io/input_error.h"
@@ -264,12 +264,12 @@ PYBIND11_MODULE(_hullopt, m) {
         io::YamlMap sm = root.Map("solver");
         const io::SolverConfig sc = io::ParseSolverConfig(sm, /*frequencies_required=*/false);
         sm.Finish();
-        const sk::RaoSolverOptions o = io::RaoOptions(sc, name, sc.cs);
+        const sk::RaoSolverOptions o = eval::RaoOptions(sc, name, sc.cs());
         sk::RaoTable t;
         {
           py::gil_scoped_release release;
           t = sk::ComputeRaos(h, mass, speed_m_s, w.rho_kg_m3, w.g_m_s2, omega, o,
-                              sk::TransientGreenKernelBuilder(sc.Force()));
+                              sk::TransientGreenKernelBuilder(sc.sectional_force));
         }
         return RaoDict(t);
       },
@@ -319,26 +319,26 @@ PYBIND11_MODULE(_hullopt, m) {
       "...) and mean.");
 
   m.def(
-      "evaluation_frequencies", [](int count) { return Array(app::EvaluationFrequencies(count)); },
+      "evaluation_frequencies", [](int count) { return Array(eval::EvaluationFrequencies(count)); },
       py::arg("count") = 60, "The wave-frequency grid [rad/s] `hullopt evaluate` uses (uniform 0.2–3 rad/s).");
 
-  py::class_<app::DesignCase>(m, "Design",
+  py::class_<eval::DesignCase>(m, "Design",
                               "One design as `hullopt evaluate` and the campaigns read it from a config: hull, "
                               "hydrostatics, mass, water, speed and solver.")
-      .def_readonly("name", &app::DesignCase::name)
-      .def_readonly("hull", &app::DesignCase::hull)
-      .def_readonly("mass", &app::DesignCase::mass)
-      .def_readonly("speed_m_s", &app::DesignCase::speed_m_s, "[m/s]")
-      .def_property_readonly("hydrostatics", [](const app::DesignCase& d) { return HydrostaticsDict(d.hydrostatics); })
+      .def_readonly("name", &eval::DesignCase::name)
+      .def_readonly("hull", &eval::DesignCase::hull)
+      .def_readonly("mass", &eval::DesignCase::mass)
+      .def_readonly("speed_m_s", &eval::DesignCase::speed_m_s, "[m/s]")
+      .def_property_readonly("hydrostatics", [](const eval::DesignCase& d) { return HydrostaticsDict(d.hydrostatics); })
       .def(
           "raos",
-          [](const app::DesignCase& d, const py::object& omega) {
+          [](const eval::DesignCase& d, const py::object& omega) {
             const std::vector<double> w =
-                omega.is_none() ? app::SeaFrequencies(d) : omega.cast<std::vector<double>>();
+                omega.is_none() ? eval::SeaFrequencies(d) : omega.cast<std::vector<double>>();
             sk::RaoTable t;
             {
               py::gil_scoped_release release;
-              t = app::ComputeDesignRaos(d, w);
+              t = eval::ComputeDesignRaos(d, w);
             }
             return RaoDict(t);
           },
@@ -350,7 +350,7 @@ PYBIND11_MODULE(_hullopt, m) {
       "load_design",
       [](const std::string& config_file, const std::string& name) {
         io::YamlMap root = io::YamlMap::LoadFile(config_file);
-        return app::LoadDesignCase(root, config_file, name);
+        return io::LoadDesignCase(root, config_file, name);
       },
       py::arg("config_file"), py::arg("name") = "design",
       "The design of a hull config (hull, water, speed, solver, mass), read as `hullopt evaluate` reads it.");

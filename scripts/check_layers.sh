@@ -3,7 +3,7 @@
 # (docs/developer-guide.md). Prints every edge that runs up a layer and exits 1 if there is one.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-layers=(parametric_hull resistance seakeeping/green seakeeping/sections seakeeping/strip seakeeping/motions seas optimizer io app)
+layers=(parametric_hull resistance seakeeping/green seakeeping/sections seakeeping/strip seakeeping/motions seas optimizer evaluation io app)
 rank_of() {  # rank of a path's layer, or -1 for paths outside the layered modules
   local p=$1 i best=-1 bestlen=0
   for i in "${!layers[@]}"; do
@@ -21,6 +21,6 @@ while IFS= read -r file; do
     [ "$ir" -lt 0 ] && continue
     if [ "$ir" -gt "$fr" ]; then echo "up-layer include: $file -> $inc"; bad=1; fi
   done < <(sed -n 's/^#include "\([^"]*\)".*/\1/p' "$file")
-done < <(find parametric_hull resistance seakeeping seas optimizer io app -name '*.h' -o -name '*.cpp' -o -name '*.c' | sort)
+done < <(find parametric_hull resistance seakeeping seas optimizer evaluation io app -name '*.h' -o -name '*.cpp' -o -name '*.c' | sort)
 [ $bad -eq 0 ] && echo "module graph: no include runs up a layer"
 exit $bad

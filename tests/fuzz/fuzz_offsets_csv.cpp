@@ -1,6 +1,6 @@
 // libFuzzer harness: the offsets CSV reader, then the hydrostatics and plausibility checks of what it read.
 #include "fuzz_input.h"
-#include "io/hull_plausibility.h"
+#include "evaluation/hull_plausibility.h"
 #include "io/input_error.h"
 #include "io/offsets_csv.h"
 #include "parametric_hull/hydrostatics.h"
@@ -13,7 +13,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     h.type = "offsets";
     h.draught_m = 0.15;
     h.bodies = {io::ReadOffsetsCsv(path, h.draught_m)};
-    io::CheckHull(h, path);
+    eval::CheckHull(h, path);
   } catch (const io::InputError&) {
   }
   return 0;

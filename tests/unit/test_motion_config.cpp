@@ -24,12 +24,12 @@ hullopt::hull::Hydrostatics Hs() {
 TEST_CASE("solver section with defaults and a lambda/L list", "[config]") {
   auto m = FromText("Cs: 0.024\nfrequencies: { lambda_over_L: [1.0, 1.5, 2.0] }\n");
   const auto c = hullopt::io::ParseSolverConfig(m);
-  CHECK(c.method == "time_domain_strip");
-  CHECK(c.sections == 40);
-  CHECK(c.panels == 14);
-  CHECK(c.cs == 0.024);
-  CHECK(c.hydrodynamic_fraction == 0.2);
-  CHECK(c.path == "periodic");
+  CHECK(c.rao.method == hullopt::sk::RaoSolverOptions::Method::kTimeDomainStrip);
+  CHECK(c.rao.sections == 40);
+  CHECK(c.rao.panels == 14);
+  CHECK(c.cs() == 0.024);
+  CHECK(c.rao.marching.hydrodynamic_fraction == 0.2);
+  CHECK(c.rao.path == hullopt::sk::RaoSolverOptions::Path::kPeriodic);
   CHECK(c.frequencies.quantity == hullopt::sk::FrequencySpec::Quantity::kLambdaOverL);
   CHECK(c.frequencies.values.size() == 3);
   CHECK(m.resolved()["sections"].as<int>() == 40);

@@ -1,23 +1,22 @@
-#include "app/design_case.h"
+#include "evaluation/design_case.h"
 
 #include <cmath>
 #include <stdexcept>
 
-#include "io/input_error.h"
-#include "io/speed_config.h"
+#include "evaluation/input_error.h"
 #include "seakeeping/motions/head_sea_ship_model.h"
 #include "seakeeping/motions/periodic_motion_solver.h"
 #include "seakeeping/motions/rao_checks.h"
 #include "seakeeping/motions/validity_range.h"
 
-namespace hullopt::app {
+namespace hullopt::eval {
 namespace {
 
-sk::RaoSolverOptions SolverOptions(const DesignCase& d, double cs) { return io::RaoOptions(d.solver, d.name, cs); }
+sk::RaoSolverOptions SolverOptions(const DesignCase& d, double cs) { return RaoOptions(d.solver, d.name, cs); }
 
 // The 2D+t method's validity range (conventional strip theory has its own, low-Fn one: not flagged here).
 void AddValidityWarnings(const DesignCase& d, sk::RaoTable* t) {
-  if (d.solver.method != "time_domain_strip") return;
+  if (d.solver.rao.method != sk::RaoSolverOptions::Method::kTimeDomainStrip) return;
   for (auto& w : sk::ValidityWarnings(d.speed_m_s, d.hydrostatics.L_m, d.water.g_m_s2, t->omega_rad_s))
     t->warnings.push_back(std::move(w));
 }
@@ -27,9 +26,9 @@ auto Guard(const DesignCase& d, F&& f) -> decltype(f()) {
   try {
     return f();
   } catch (const std::domain_error& e) {
-    throw io::InputError("design '" + d.name + "': cannot compute RAOs: " + e.what());
+    throw InputError("design '" + d.name + "': cannot compute RAOs: " + e.what());
   } catch (const std::invalid_argument& e) {
-    throw io::InputError("design '" + d.name + "': cannot compute RAOs: " + e.what());
+    throw InputError("design '" + d.name + "': cannot compute RAOs: " + e.what());
   }
 }
 
@@ -50,41 +49,14 @@ std::map<std::string, double> DesignCase::Parameters() const {
           {"L_m", h.L_m}};
 }
 
-DesignCase LoadDesignCase(io::YamlMap& root, const std::string& config_file, const std::string& name,
-                          bool read_speed) {
-  DesignCase d;
-  d.name = name;
-  d.water = io::ParseWater(root);
-  const io::HullOptions hull_opts = io::ParseHullConfig(root, d.water);
-  const io::SpeedOptions speed = read_speed ? io::ParseSpeed(root, true) : io::SpeedOptions{};
-  d.hull = io::LoadHull(hull_opts, config_file, &d.input_warnings);
-  if (root.Has("solver")) {
-    io::YamlMap s = root.Map("solver");
-    d.has_frequencies = s.Has("frequencies");
-    if (s.Has("kernel")) s.Choice("kernel", {"transient_green"}, "transient_green");
-    // Evaluations in seas choose their own frequency grid, so solver.frequencies is optional here.
-    d.solver = io::ParseSolverConfig(s, /*frequencies_required=*/false);
-  }
-  try {
-    d.hydrostatics = hull::ComputeHydrostatics(d.hull, d.water.rho_kg_m3);
-  } catch (const std::exception& e) {
-    throw io::InputError(config_file + ": design '" + name + "': " + e.what());
-  }
-  io::YamlMap mass_map = root.MapOrEmpty("mass");
-  d.mass = io::ParseMassConfig(mass_map, d.hydrostatics, &d.input_warnings);
-  d.running_hull = io::ApplyHullAttitude(hull_opts, d.hull, d.mass.lcg_m_from_ap, config_file);
-  if (read_speed) d.speed_m_s = speed.MetresPerSecond(d.hydrostatics.L_m, d.water.g_m_s2);
-  return d;
-}
-
 sk::StripKernel BuildDesignKernel(const DesignCase& d) {
-  if (d.solver.method != "time_domain_strip")
-    throw io::InputError("design '" + d.name + "': solver.method = " + d.solver.method +
+  if (d.solver.rao.method != sk::RaoSolverOptions::Method::kTimeDomainStrip)
+    throw InputError("design '" + d.name + "': solver.method = " + MethodName(d.solver.rao.method) +
                          ": only the time-domain strip method has a frequency-independent strip kernel "
                          "(needed here); use method: time_domain_strip");
   return Guard(d, [&] {
-    return sk::BuildHullStripKernel(d.running_hull, SolverOptions(d, d.solver.cs), d.speed_m_s, d.water.rho_kg_m3,
-                                    d.water.g_m_s2, sk::TransientGreenKernelBuilder(d.solver.Force()));
+    return sk::BuildHullStripKernel(d.running_hull, SolverOptions(d, d.solver.cs()), d.speed_m_s, d.water.rho_kg_m3,
+                                    d.water.g_m_s2, sk::TransientGreenKernelBuilder(d.solver.sectional_force));
   });
 }
 
@@ -106,10 +78,10 @@ sk::RaoTable DesignRaosFromKernel(const DesignCase& d, const sk::StripKernel& ke
 
 sk::RaoTable ComputeDesignRaos(const DesignCase& d, const std::vector<double>& omega_rad_s,
                                double cs_override) {
-  const double cs = cs_override >= 0.0 ? cs_override : d.solver.cs;
+  const double cs = cs_override >= 0.0 ? cs_override : d.solver.cs();
   return Guard(d, [&] {
     sk::RaoTable t = sk::ComputeRaos(d.running_hull, d.mass, d.speed_m_s, d.water.rho_kg_m3, d.water.g_m_s2, omega_rad_s,
-                                     SolverOptions(d, cs), sk::TransientGreenKernelBuilder(d.solver.Force()));
+                                     SolverOptions(d, cs), sk::TransientGreenKernelBuilder(d.solver.sectional_force));
     t.warnings.insert(t.warnings.begin(), d.input_warnings.begin(), d.input_warnings.end());
     AddValidityWarnings(d, &t);
     // What the generator changed to build the hull goes with every result of it.
@@ -123,7 +95,7 @@ std::vector<double> SeaFrequencies(const DesignCase& d) {
   try {
     return sk::WaveFrequencies(d.solver.frequencies, d.speed_m_s, d.water.g_m_s2, d.hydrostatics.L_m);
   } catch (const std::invalid_argument& e) {
-    throw io::InputError("design '" + d.name + "': solver.frequencies: " + e.what());
+    throw InputError("design '" + d.name + "': solver.frequencies: " + e.what());
   }
 }
 
@@ -136,11 +108,11 @@ std::string SeaFrequencyAdvice(const DesignCase& d, const std::string& config_fi
 sk::CoefficientTable ComputeDesignCoefficients(const DesignCase& d, const std::vector<double>& omega_rad_s) {
   try {
     return sk::ComputeCoefficients(d.hull, d.mass, d.speed_m_s, d.water.rho_kg_m3, d.water.g_m_s2, omega_rad_s,
-                                   SolverOptions(d, d.solver.cs), sk::TransientGreenKernelBuilder(d.solver.Force()));
+                                   SolverOptions(d, d.solver.cs()), sk::TransientGreenKernelBuilder(d.solver.sectional_force));
   } catch (const std::domain_error& e) {
-    throw io::InputError("design '" + d.name + "': cannot compute coefficients: " + e.what());
+    throw InputError("design '" + d.name + "': cannot compute coefficients: " + e.what());
   } catch (const std::invalid_argument& e) {
-    throw io::InputError("design '" + d.name + "': cannot compute coefficients: " + e.what());
+    throw InputError("design '" + d.name + "': cannot compute coefficients: " + e.what());
   }
 }
 
@@ -150,4 +122,4 @@ std::vector<double> EvaluationFrequencies(int count) {
   return w;
 }
 
-}  // namespace hullopt::app
+}  // namespace hullopt::eval

@@ -7,7 +7,7 @@
 #include "parametric_hull/hull_form.h"
 #include "parametric_hull/plausibility.h"
 
-namespace hullopt::io {
+namespace hullopt::eval {
 
 /// Hydrostatics of the hull, then the hull rules. `where` names the source ("file.csv", "config: key
 /// 'hull.parametric'"). Throws InputError "where: rule" for the first refusal (also when the hull displaces
@@ -18,4 +18,4 @@ std::vector<std::string> CheckHull(const hull::HullForm& hull, const std::string
 std::vector<std::string> ApplyFindings(const std::vector<hull::PlausibilityFinding>& findings,
                                        const std::string& where);
 
-}  // namespace hullopt::io
+}  // namespace hullopt::eval

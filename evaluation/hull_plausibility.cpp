@@ -1,11 +1,11 @@
-#include "io/hull_plausibility.h"
+#include "evaluation/hull_plausibility.h"
 
 #include <stdexcept>
 
-#include "io/input_error.h"
+#include "evaluation/input_error.h"
 #include "parametric_hull/hydrostatics.h"
 
-namespace hullopt::io {
+namespace hullopt::eval {
 
 std::vector<std::string> ApplyFindings(const std::vector<hull::PlausibilityFinding>& findings,
                                        const std::string& where) {
@@ -26,4 +26,4 @@ std::vector<std::string> CheckHull(const hull::HullForm& hull, const std::string
   return ApplyFindings(hull::CheckHullPlausibility(hull, hs), where);
 }
 
-}  // namespace hullopt::io
+}  // namespace hullopt::eval

@@ -1,0 +1,123 @@
+#include "evaluation/msi_evaluator.h"
+
+#include <cmath>
+#include <cstdio>
+#include <stdexcept>
+
+#include "evaluation/input_error.h"
+
+namespace hullopt::eval {
+namespace {
+
+const std::vector<std::string> kQuantities = {"L_m", "B_m",  "T_m",  "B_overall_m", "displacement_t", "Cb",
+                                              "Cp",  "Cwp", "Cvp", "Fr",          "GM_T_m",         "GM_L_m",
+                                              "R_T_kN", "R_W_kN", "P_E_kW"};
+
+class MsiEvaluator : public opt::Evaluator {
+ public:
+  MsiEvaluator(DesignBasis basis, std::vector<const hull::DesignVariableField*> fields, MsiObjectiveOptions o)
+      : basis_(std::move(basis)), fields_(std::move(fields)), o_(std::move(o)), spectra_(sk::BuildSpectra(o_.seas)) {}
+
+  opt::EvalResult Evaluate(const std::vector<double>& x) override {
+    opt::EvalResult r;
+    DesignCase d;
+    try {
+      d = BuildTrialDesign(basis_, fields_, x);
+    } catch (const InputError& e) {  // generator refusal or an impossible combination
+      r.produced = false;
+      r.error = e.what();
+      return r;
+    }
+    sk::RaoTable rao;
+    sk::DesignEvaluation ev;
+    try {  // a non-finite RAO or response is refused where it is computed: this design is not produced
+      rao = ComputeDesignRaos(d, SeaFrequencies(d));
+      ev = sk::EvaluateDesign(rao, d.Extent(), spectra_, {}, o_.evaluation);
+    } catch (const InputError& e) {
+      r.produced = false;
+      r.error = e.what();
+      return r;
+    } catch (const std::domain_error& e) {
+      r.produced = false;
+      r.error = e.what();
+      return r;
+    }
+    for (const auto& w : rao.warnings) r.warning += (r.warning.empty() ? "" : "; ") + w;
+    for (std::size_t i = 0; i < ev.seas.size(); ++i) {
+      const auto& s = ev.seas[i];
+      const auto& p = o_.position < 0 ? s.mean : s.positions[o_.position];
+      r.sea_values.push_back(o_.measure == Measure::kRmsAccel ? p.rms_accel_g : p.msi_pct);
+    }
+    r.objective = WeightedMean(r.sea_values);
+    // Calm-water resistance at the design speed (about 2 ms CPU for the default catamaran, bench_resistance).
+    res::ResistanceAtSpeed rs;
+    try {
+      rs = res::CalmWaterResistance(d.hull, o_.resistance).At(d.speed_m_s, d.water.rho_kg_m3, d.water.g_m_s2);
+    } catch (const std::invalid_argument& e) {
+      r.produced = false;
+      r.error = std::string("resistance: ") + e.what();
+      return r;
+    }
+    if (!rs.warning.empty()) r.warning += (r.warning.empty() ? "resistance: " : "; resistance: ") + rs.warning;
+    if (o_.measure == Measure::kEffectivePower) r.objective = rs.P_E_W / 1e3;
+    const auto& h = d.hydrostatics;
+    double b_overall = 0;
+    for (const auto& body : d.hull.bodies)
+      for (const auto& st : body.stations)
+        for (double y : st.y_m) b_overall = std::max(b_overall, 2 * (body.y_centre_m + y));
+    r.quantities = {h.L_m, h.B_m, h.T_m, b_overall, h.displacement_t, h.Cb, h.Cp, h.Cwp, h.Cvp,
+                    d.speed_m_s / std::sqrt(d.water.g_m_s2 * h.L_m), h.gm_t_m, h.gm_l_m,
+                    rs.R_T_N / 1e3, rs.R_W_N / 1e3, rs.P_E_W / 1e3};
+    return r;
+  }
+
+  double ObjectiveImplied(const std::vector<double>&, const std::vector<double>& sea_values) const override {
+    // A power objective is not implied by the per-sea columns: such rows are checked by the spot recomputation.
+    if (o_.measure == Measure::kEffectivePower) return NAN;
+    return sea_values.size() == o_.sea_weights.size() ? WeightedMean(sea_values) : NAN;
+  }
+
+  std::vector<std::string> SeaNames() const override {
+    std::vector<std::string> n;
+    for (std::size_t i = 0; i < o_.seas.size(); ++i) {
+      char buf[96];
+      std::snprintf(buf, sizeof buf, "%s_Hs%.2g_Tz%.3g", o_.measure == Measure::kRmsAccel ? "rms_accel_g" : "msi_pct",
+                    o_.seas[i].Hs_m, o_.seas[i].Tz_s);
+      n.push_back(buf);
+    }
+    return n;
+  }
+  std::vector<std::string> QuantityNames() const override { return kQuantities; }
+  std::vector<std::string> VariableNames() const override {
+    std::vector<std::string> names;
+    for (const auto& f : hull::DesignVariableFields())
+      if (f.campaign_variable) names.push_back(f.name);
+    return names;
+  }
+  // The strip kernel runs OpenMP-parallel inside; evaluations run one at a time.
+  bool IsThreadSafe() const override { return false; }
+
+ private:
+  double WeightedMean(const std::vector<double>& v) const {
+    double sum = 0, wsum = 0;
+    for (std::size_t i = 0; i < v.size(); ++i) {
+      sum += o_.sea_weights[i] * v[i];
+      wsum += o_.sea_weights[i];
+    }
+    return sum / wsum;
+  }
+  using Measure = MsiObjectiveOptions::Measure;
+  DesignBasis basis_;
+  std::vector<const hull::DesignVariableField*> fields_;
+  MsiObjectiveOptions o_;
+  std::vector<sk::WaveSpectrum> spectra_;
+};
+
+}  // namespace
+
+std::unique_ptr<opt::Evaluator> MakeMsiEvaluator(DesignBasis basis, const std::vector<std::string>& variables,
+                                                 MsiObjectiveOptions options) {
+  return std::make_unique<MsiEvaluator>(std::move(basis), TrialFields(variables), std::move(options));
+}
+
+}  // namespace hullopt::eval

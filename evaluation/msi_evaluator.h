@@ -1,0 +1,33 @@
+#pragma once
+// The seakeeping objective of a campaign: free design variables → parametric hull at fixed displacement →
+// RAOs by the time-domain strip method → rms accelerations and MSI in the campaign's seas, and the calm-water
+// resistance at the design speed. io/msi_objective_config.h reads its options from a config.
+//
+// Quantities for constraints: L_m, B_m, T_m, B_overall_m, displacement_t, Cb, Cp, Cwp, Cvp, Fr, GM_T_m, GM_L_m,
+// and the calm-water resistance at the design speed R_T_kN, R_W_kN, P_E_kW.
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "evaluation/trial_design.h"
+#include "optimizer/evaluator.h"
+#include "resistance/calm_water_resistance.h"
+#include "seas/design_evaluation.h"
+
+namespace hullopt::eval {
+
+struct MsiObjectiveOptions {
+  enum class Measure { kMsi, kRmsAccel, kEffectivePower };
+  Measure measure = Measure::kMsi;  ///< MSI [%], rms vertical acceleration [g] or P_E [kW]
+  int position = -1;                ///< -1: mean of the passenger positions; 0 forward, 1 LCG, 2 transom
+  std::vector<sk::SeaState> seas;
+  std::vector<double> sea_weights;  ///< one per sea, >= 0, not all 0
+  sk::EvaluationOptions evaluation;
+  res::ResistanceOptions resistance;
+};
+
+/// The evaluator of the campaign variables `variables` (in order) about the base design.
+std::unique_ptr<opt::Evaluator> MakeMsiEvaluator(DesignBasis basis, const std::vector<std::string>& variables,
+                                                 MsiObjectiveOptions options);
+
+}  // namespace hullopt::eval

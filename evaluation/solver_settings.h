@@ -1,0 +1,30 @@
+#pragma once
+// The strip-solver settings of a design, held in the solver's own types: the RAO solver's options (Cs in
+// rao.motion.damping_cs, the time-marching fraction in rao.marching), the form of the sectional force that
+// picks the kernel builder, and the wave frequencies a config may give.
+#include <string>
+
+#include "seakeeping/motions/frequency_list.h"
+#include "seakeeping/motions/rao_solver.h"
+#include "seakeeping/strip/strip_operators.h"
+
+namespace hullopt::eval {
+
+struct SolverSettings {
+  sk::RaoSolverOptions rao;  ///< defaults: the paper's 40 sections x 14 panels, Cs 0, periodic path
+  /// The strip momentum's rate of change (default) or the paper's fixed-point pressure integral.
+  sk::SectionalForce sectional_force = sk::SectionalForce::kMomentum;
+  sk::FrequencySpec frequencies;
+  double cs() const { return rao.motion.damping_cs; }
+};
+
+/// The settings' solver options for the hull named hull_name (messages) with damping coefficient cs (the
+/// settings' own, or a trial value of a calibration).
+sk::RaoSolverOptions RaoOptions(const SolverSettings& settings, const std::string& hull_name, double cs);
+
+/// The config names of the methods: "time_domain_strip", "strip_theory_stf".
+std::string MethodName(sk::RaoSolverOptions::Method method);
+/// The config names of the paths: "periodic", "time_marching".
+std::string PathName(sk::RaoSolverOptions::Path path);
+
+}  // namespace hullopt::eval

@@ -1,0 +1,37 @@
+#pragma once
+// The designs of a campaign: a base parametric design whose free variables a trial sets field by field, then
+// the hull, hydrostatics, mass, attitude and speed follow as they would for a config that gave those values.
+#include <string>
+#include <vector>
+
+#include "evaluation/design_case.h"
+#include "evaluation/design_speed.h"
+#include "parametric_hull/design_variables.h"
+#include "parametric_hull/running_attitude.h"
+
+namespace hullopt::eval {
+
+/// What a campaign holds fixed about its designs.
+struct DesignBasis {
+  std::string config_file;          ///< names the source in messages
+  hull::DesignVariables variables;  ///< the base parametric hull (rho from the water)
+  hull::RunningAttitude attitude;   ///< pivot set at each design's centre of gravity
+  WaterOptions water;
+  SpeedOptions speed;
+  SolverSettings solver;
+  bool has_frequencies = false;
+  /// Mass follows the design: the displacement is fixed, LCG = LCB, k_yy = kyy_over_L L, KG = kg_over_T T.
+  double kyy_over_L = 0.25;
+  double kg_over_T = 1.0;
+};
+
+/// The free variables of a campaign, in its order (the fields of x); nullptr for a name that is not a campaign
+/// variable of DesignVariableFields() (the campaign's own check names it, opt::CampaignDefinition).
+std::vector<const hull::DesignVariableField*> TrialFields(const std::vector<std::string>& names);
+
+/// The design named `name` at x (one value per field, in order). Throws InputError naming the config key and
+/// rule for values the rules or the generator refuse, as the config with these values would.
+DesignCase BuildTrialDesign(const DesignBasis& basis, const std::vector<const hull::DesignVariableField*>& fields,
+                            const std::vector<double>& x, const std::string& name = "design");
+
+}  // namespace hullopt::eval

@@ -1,0 +1,71 @@
+#include "io/msi_objective_config.h"
+
+#include <numeric>
+
+#include "evaluation/msi_evaluator.h"
+#include "io/design_config.h"
+#include "io/input_error.h"
+#include "io/resistance_config.h"
+#include "io/seas_config.h"
+
+namespace hullopt::io {
+
+std::unique_ptr<opt::Evaluator> ReadMsiObjective(YamlMap& root, YamlMap& objective,
+                                                 const opt::CampaignDefinition& campaign) {
+  using Measure = eval::MsiObjectiveOptions::Measure;
+  eval::MsiObjectiveOptions o;
+  const std::string measure = objective.Choice("measure", {"msi", "rms_accel", "P_E_kW"}, "msi");
+  o.measure = measure == "rms_accel" ? Measure::kRmsAccel
+              : measure == "P_E_kW"  ? Measure::kEffectivePower
+                                     : Measure::kMsi;
+  const std::string pos = objective.Choice("position", {"mean", "forward", "lcg", "transom"}, "mean");
+  o.position = pos == "mean" ? -1 : pos == "forward" ? 0 : pos == "lcg" ? 1 : 2;
+  o.seas = ReadSeas(root);
+  o.sea_weights.assign(o.seas.size(), 1.0);
+  if (objective.Has("sea_weights")) {
+    o.sea_weights = objective.Numbers("sea_weights");
+    if (o.sea_weights.size() != o.seas.size())
+      objective.Fail("sea_weights", "needs one weight per sea (" + std::to_string(o.seas.size()) + " seas)");
+    for (double w : o.sea_weights)
+      if (w < 0) objective.Fail("sea_weights", "weights must be >= 0");
+    if (std::accumulate(o.sea_weights.begin(), o.sea_weights.end(), 0.0) <= 0)
+      objective.Fail("sea_weights", "at least one weight must be > 0");
+  }
+  objective.Finish();
+  o.evaluation.msi = ReadMsiOptions(root);
+  eval::DesignBasis basis;
+  basis.config_file = root.file();
+  YamlMap mass = root.MapOrEmpty("mass");
+  basis.kyy_over_L = mass.Number("kyy_over_L", 0.25);
+  basis.kg_over_T = mass.Number("kg_over_T", 1.0);
+  if (!(basis.kyy_over_L > 0.05 && basis.kyy_over_L < 0.5)) mass.Fail("kyy_over_L", "must be within 0.05..0.5");
+  if (!(basis.kg_over_T > 0 && basis.kg_over_T < 10)) mass.Fail("kg_over_T", "must be within 0..10");
+  mass.Finish();
+  o.resistance = ParseResistanceConfig(root, false).options;
+  const YAML::Node& raw = root.raw();
+  if (!raw["hull"] || !raw["hull"]["parametric"])
+    throw InputError(root.file() + ": key 'hull.parametric': a campaign needs a parametric base hull");
+  // The base design, read (and checked) once: its options are what every trial starts from.
+  {
+    YAML::Node base_only(YAML::NodeType::Map);
+    for (const char* k : {"hull", "water", "speed", "solver"})
+      if (raw[k]) base_only[k] = YAML::Clone(raw[k]);
+    YamlMap check(base_only, "", root.file(), YAML::Node(YAML::NodeType::Map));
+    DesignConfig c;
+    LoadDesignCase(check, root.file(), "base design", true, &c);
+    check.Finish();
+    basis.variables = c.hull.design;
+    basis.attitude = c.hull.attitude;
+    basis.water = c.water;
+    basis.speed = c.speed;
+    basis.solver = c.solver;
+    basis.has_frequencies = c.has_frequencies;
+  }
+  // Record the physics blocks in the resolved config through the strict reader too.
+  for (const char* k : {"hull", "water", "speed", "solver"}) root.Skip(k);
+  std::vector<std::string> names;
+  for (const auto& v : campaign.variables) names.push_back(v.name);
+  return eval::MakeMsiEvaluator(std::move(basis), names, std::move(o));
+}
+
+}  // namespace hullopt::io
