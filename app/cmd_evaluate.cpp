@@ -128,12 +128,12 @@ void CheckResolution(const io::ResolutionCheckConfig& check, const std::vector<s
                      const std::vector<sk::PassengerPosition>& points, const sk::EvaluationOptions& options,
                      DesignInput* in) {
   eval::DesignCase fine = *in->computed;
-  fine.solver.sections *= check.factor;
-  fine.solver.panels *= check.factor;
-  if (fine.solver.sections > 400 || fine.solver.panels > 100)
+  fine.solver.rao.sections *= check.factor;
+  fine.solver.rao.panels *= check.factor;
+  if (fine.solver.rao.sections > 400 || fine.solver.rao.panels > 100)
     throw io::InputError(in->where + ": design '" + in->design.name + "': resolution_check.factor " +
-                         std::to_string(check.factor) + " asks for " + std::to_string(fine.solver.sections) +
-                         " sections x " + std::to_string(fine.solver.panels) +
+                         std::to_string(check.factor) + " asks for " + std::to_string(fine.solver.rao.sections) +
+                         " sections x " + std::to_string(fine.solver.rao.panels) +
                          " panels, beyond the solver's 400 x 100");
   const sk::RaoTable fine_rao = eval::ComputeDesignRaos(fine, in->design.rao.omega_rad_s, in->cs_override);
   sk::DesignEvaluation fine_eval;
@@ -143,8 +143,8 @@ void CheckResolution(const io::ResolutionCheckConfig& check, const std::vector<s
     throw io::InputError(in->where + ": design '" + in->design.name + "' at the check's resolution: " + e.what());
   }
   in->design.resolution = sk::CompareResolutions(in->design.rao, fine_rao, in->design.evaluation, fine_eval,
-                                                 in->computed->solver.sections, in->computed->solver.panels,
-                                                 fine.solver.sections, fine.solver.panels, check.options);
+                                                 in->computed->solver.rao.sections, in->computed->solver.rao.panels,
+                                                 fine.solver.rao.sections, fine.solver.rao.panels, check.options);
   if (!in->design.resolution->converged)
     in->design.rao.warnings.push_back("resolution check: " + in->design.resolution->warning);
 }
