@@ -15,6 +15,7 @@
 #include "seakeeping/motions/head_sea_ship_model.h"
 #include "seakeeping/motions/periodic_motion_solver.h"
 #include "seakeeping/motions/rao_solver.h"
+#include "seakeeping/motions/strip_theory_stf.h"
 #include "seakeeping/strip/strip_force_model.h"
 #include "seakeeping/strip/strip_geometry.h"
 #include "seakeeping/motions/time_marching_motion.h"
@@ -120,6 +121,19 @@ void BM_KernelBuildPressureForm(benchmark::State& state) {
   }
 }
 BENCHMARK(BM_KernelBuildPressureForm)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(1);
+
+// Conventional strip theory (method: strip_theory_stf) on the same demihull: 10 wavelengths, every (station,
+// omega_e) section solved by the frequency-domain panel method (a fresh row cache per iteration).
+void BM_StripTheorySweep(benchmark::State& state) {
+  const auto& d = TheDemihull();
+  SetThreads(static_cast<int>(state.range(0)));
+  const sk::HeadSeaShipModel model(d.geometry, d.mass, Options());
+  const std::vector<double> omega = sk::WaveFrequencies(
+      sk::FrequencySpec::Range(sk::FrequencySpec::Quantity::kLambdaOverL, 0.8, 3.0, 10), d.speed, kG, 3.0);
+  for (auto _ : state)
+    benchmark::DoNotOptimize(sk::SolveStripTheoryRaos(model, omega, sk::FrequencyDomainSectionRows(d.geometry, 14)));
+}
+BENCHMARK(BM_StripTheorySweep)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(1);
 
 }  // namespace
 

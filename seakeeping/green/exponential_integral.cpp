@@ -8,6 +8,9 @@ namespace {
 
 constexpr double kEulerGamma = 0.57721566490153286061;
 constexpr double kEps = 1e-16;
+// The convergence tests compare squared magnitudes: std::abs of a complex number is a hypot call, which
+// took most of the strip-theory comparator's time.
+constexpr double kEps2 = kEps * kEps;
 
 // S(z) = Σ_{k>=1} (−1)^{k+1} z^k / (k·k!), so that E1(z) = −γ − ln z + S(z) (DLMF 6.6.2).
 std::complex<double> SeriesTail(std::complex<double> z) {
@@ -17,7 +20,7 @@ std::complex<double> SeriesTail(std::complex<double> z) {
     term *= -z / static_cast<double>(k);
     const std::complex<double> add = term / static_cast<double>(k);
     sum += add;
-    if (std::abs(add) <= kEps * std::abs(sum)) break;
+    if (std::norm(add) <= kEps2 * std::norm(sum)) break;
   }
   return sum;
 }
@@ -25,12 +28,17 @@ std::complex<double> SeriesTail(std::complex<double> z) {
 // Where the power series is used: |z| <= 5, or close to the negative real axis (Re z < −2|Im z|) for |z| <
 // 40, where the continued fraction converges slowly and the series has no cancellation.
 bool UseSeries(std::complex<double> z) {
-  const double a = std::abs(z);
-  return a <= 5.0 || (z.real() < -2.0 * std::fabs(z.imag()) && a < 40.0);
+  const double a2 = std::norm(z);
+  return a2 <= 25.0 || (z.real() < -2.0 * std::fabs(z.imag()) && a2 < 1600.0);
 }
 
 bool UseAsymptotic(std::complex<double> z) {
-  return z.real() < -2.0 * std::fabs(z.imag()) && std::abs(z) >= 40.0;
+  return z.real() < -2.0 * std::fabs(z.imag()) && std::norm(z) >= 1600.0;
+}
+
+// |v| < tiny without a hypot (tiny² would underflow): the larger component decides within a factor √2.
+bool Negligible(std::complex<double> v, double tiny) {
+  return std::fmax(std::fabs(v.real()), std::fabs(v.imag())) < tiny;
 }
 
 // e^z E1(z) by the Laguerre-type J-fraction 1/(z+1− 1²/(z+3− 2²/(z+5− …))) (DLMF 6.9.1 contracted), evaluated
@@ -45,13 +53,13 @@ std::complex<double> ContinuedFraction(std::complex<double> z) {
     const double an = -static_cast<double>(i) * i;
     b += 2.0;
     d = an * d + b;
-    if (std::abs(d) < tiny) d = tiny;
+    if (Negligible(d, tiny)) d = tiny;
     c = b + an / c;
-    if (std::abs(c) < tiny) c = tiny;
+    if (Negligible(c, tiny)) c = tiny;
     d = 1.0 / d;
     const std::complex<double> del = c * d;
     h *= del;
-    if (std::abs(del - 1.0) < kEps) break;
+    if (std::norm(del - 1.0) < kEps2) break;
   }
   return h;
 }
@@ -61,14 +69,14 @@ std::complex<double> ContinuedFraction(std::complex<double> z) {
 std::complex<double> Asymptotic(std::complex<double> z) {
   std::complex<double> term = 1.0 / z;
   std::complex<double> sum = term;
-  double last = std::abs(term);
+  double last = std::norm(term);
   for (int n = 1; n < 200; ++n) {
     term *= -static_cast<double>(n) / z;
-    const double mag = std::abs(term);
-    if (mag > last) break;  // optimal truncation
+    const double mag2 = std::norm(term);
+    if (mag2 > last) break;  // optimal truncation
     sum += term;
-    last = mag;
-    if (mag <= kEps * std::abs(sum)) break;
+    last = mag2;
+    if (mag2 <= kEps2 * std::norm(sum)) break;
   }
   const double side = std::signbit(z.imag()) ? -1.0 : 1.0;
   return sum - std::complex<double>(0.0, side * M_PI) * std::exp(z);
@@ -89,27 +97,34 @@ std::complex<double> ExpIntE1(std::complex<double> z) {
   return std::exp(-z) * ScaledExpIntE1(z);
 }
 
-std::complex<double> ScaledExpIntE1PlusLog(std::complex<double> z) {
-  if (std::abs(z) < 1e-300) return {-kEulerGamma, 0.0};
-  if (UseSeries(z)) {
-    // e^z(−γ − ln z + S) + ln z = e^z(−γ + S) + (1 − e^z) ln z, with 1 − e^z = −expm1(z) accurate near 0.
-    const std::complex<double> ez = std::exp(z);
-    std::complex<double> one_minus_ez;
-    if (std::abs(z) < 0.5) {
-      // −expm1(z) by its series: no cancellation for small |z|.
-      std::complex<double> t = z, s = z;
-      for (int k = 2; k < 40; ++k) {
-        t *= z / static_cast<double>(k);
-        s += t;
-        if (std::abs(t) <= kEps * std::abs(s)) break;
-      }
-      one_minus_ez = -s;
-    } else {
-      one_minus_ez = 1.0 - ez;
-    }
-    return ez * (-kEulerGamma + SeriesTail(z)) + one_minus_ez * std::log(z);
+namespace {
+
+// −expm1(z) = 1 − e^z, by its series for small |z| (no cancellation), given e^z.
+std::complex<double> OneMinusExp(std::complex<double> z, std::complex<double> ez) {
+  if (!(std::norm(z) < 0.25)) return 1.0 - ez;
+  std::complex<double> t = z, s = z;
+  for (int k = 2; k < 40; ++k) {
+    t *= z / static_cast<double>(k);
+    s += t;
+    if (std::norm(t) <= kEps2 * std::norm(s)) break;
   }
-  return ScaledExpIntE1(z) + std::log(z);
+  return -s;
 }
+
+}  // namespace
+
+ScaledExpIntE1Pair ScaledExpIntE1AndPlusLog(std::complex<double> z) {
+  if (z == std::complex<double>(0.0, 0.0)) return {{std::numeric_limits<double>::infinity(), 0.0}, {-kEulerGamma, 0.0}};
+  if (Negligible(z, 1e-300)) return {ScaledExpIntE1(z), {-kEulerGamma, 0.0}};
+  if (UseSeries(z)) {
+    // One exponential, one logarithm and one series for both (the two functions differ by ln z).
+    const std::complex<double> ez = std::exp(z), tail = SeriesTail(z), log_z = std::log(z);
+    return {ez * (-kEulerGamma - log_z + tail), ez * (-kEulerGamma + tail) + OneMinusExp(z, ez) * log_z};
+  }
+  const std::complex<double> scaled = UseAsymptotic(z) ? Asymptotic(z) : ContinuedFraction(z);
+  return {scaled, scaled + std::log(z)};
+}
+
+std::complex<double> ScaledExpIntE1PlusLog(std::complex<double> z) { return ScaledExpIntE1AndPlusLog(z).plus_log; }
 
 }  // namespace hullopt::sk

@@ -21,4 +21,12 @@ std::complex<double> ExpIntE1(std::complex<double> z);
 /// in closed form.
 std::complex<double> ScaledExpIntE1PlusLog(std::complex<double> z);
 
+/// Both of the above at one z (z ≠ 0 for a finite `scaled`), sharing the exponential, the logarithm and the
+/// series: the values are those of the two functions.
+struct ScaledExpIntE1Pair {
+  std::complex<double> scaled;    ///< e^z E1(z)
+  std::complex<double> plus_log;  ///< e^z E1(z) + ln z
+};
+ScaledExpIntE1Pair ScaledExpIntE1AndPlusLog(std::complex<double> z);
+
 }  // namespace hullopt::sk

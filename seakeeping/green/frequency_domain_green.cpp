@@ -12,9 +12,10 @@ WaveGreenValue SmoothWaveGreen(double nu, double Y, double Z) {
   const C w(nu * Z, nu * ay);      // ν ζc
   const C rad = C(0.0, 2.0 * M_PI) * std::exp(C(nu * Z, -nu * ay));  // 2πi e^{ν conj ζc}
   WaveGreenValue out;
-  out.value = 2.0 * std::log(nu) - 2.0 * ScaledExpIntE1PlusLog(w).real() + rad;
+  const ScaledExpIntE1Pair e1 = ScaledExpIntE1AndPlusLog(w);
+  out.value = 2.0 * std::log(nu) - 2.0 * e1.plus_log.real() + rad;
   // d g(νζc)/dζc = ν e^w E1(w): only log-singular at ζc = 0 (the ln ζc of g cancels the −1/ζc of e^w E1).
-  const C f = nu * ScaledExpIntE1(w);
+  const C f = nu * e1.scaled;
   out.dz = -2.0 * f.real() + nu * rad;
   const C d_abs_y = 2.0 * f.imag() - C(0.0, nu) * rad;  // ∂/∂|Y|: Re(i f) = −Im f
   out.dy = (Y >= 0 ? 1.0 : -1.0) * d_abs_y;

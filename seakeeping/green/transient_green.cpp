@@ -7,7 +7,6 @@
 #include <vector>
 
 #include "seakeeping/green/cerf_wrap.h"
-#include "seakeeping/green/gauss_legendre.h"
 
 namespace hullopt::sk {
 namespace {
@@ -21,11 +20,6 @@ const double kSqrtPi = std::sqrt(M_PI);
 // of H_t and H' lose ~ε·2|x|² and ~ε·2|x|⁴ there.
 constexpr double kAsymptoticRadius = 6.0;
 constexpr int kAsymptoticTerms = 30;
-// Φ by its Taylor series up to this |x|: the largest term is ~30 times the sum there (round-off ~1e−14).
-constexpr double kTaylorRadius = 2.5;
-// Gauss–Legendre points for ∫F from radius 2.5 to |x| < 6: the integrand oscillates at most ~30 rad over the
-// segment (arg x = π/4), which 40 points integrate to round-off.
-constexpr int kMidRangePoints = 40;
 // (γ + ln 4)/4: Φ(x) − ½ ln x → this constant as x → +∞.
 constexpr double kPhiConstant = (0.57721566490153286060651209 + 1.38629436111989061883446424) / 4.0;
 
@@ -82,49 +76,43 @@ cd Dawson(cd x) {
 
 namespace {
 
-// Φ by its Taylor series about 0 (used for |x| <= 2.5 when building the table below).
-cd DawsonIntegralTaylor(cd x) {
-  // Φ = Σ t_n/(2n+2), t_0 = x², t_{n+1} = t_n (−2x²)/(2n+3).
-  const cd x2 = x * x;
-  cd term = x2, sum = 0.0;
-  for (int n = 0; n < 200; ++n) {
-    const cd add = term / (2.0 * n + 2.0);
-    sum += add;
-    if (std::abs(add) <= 1e-18 * std::abs(sum)) break;
-    term *= -2.0 * x2 / (2.0 * n + 3.0);
-  }
-  return sum;
-}
-
-// Φ for 2.5 < |x| < 6 by Gauss–Legendre of F from radius 2.5 along the ray (table building only: ~20 µs).
-cd DawsonIntegralQuadrature(cd x) {
-  const double r = std::abs(x);
-  if (r <= kTaylorRadius) return DawsonIntegralTaylor(x);
-  const cd x0 = x * (kTaylorRadius / r);
-  const cd h = x - x0;
-  const auto& q = GaussLegendre01(kMidRangePoints);
-  cd acc = 0.0;
-  for (int k = 0; k < kMidRangePoints; ++k) acc += q.weights[k] * Dawson(x0 + q.nodes[k] * h);
-  return DawsonIntegralTaylor(x0) + acc * h;
-}
-
 // Table of Φ and F on the grid x = (i + i·j)·h, 0 <= i, j <= kGridN, covering the first quadrant of |x| < 6.
 // Between nodes Φ(x0 + δ) = Φ(x0) + Σ_k F⁽ᵏ⁾(x0) δ^{k+1}/(k+1)!, with F' = 1 − 2xF and
-// F⁽ᵏ⁺¹⁾ = −2x F⁽ᵏ⁾ − 2k F⁽ᵏ⁻¹⁾; |δ| <= 0.071 and 2|x||δ| <= 0.87, so 18 terms reach ~1e−16. The Taylor
+// F⁽ᵏ⁺¹⁾ = −2x F⁽ᵏ⁾ − 2k F⁽ᵏ⁻¹⁾. With h = 0.05, |δ| <= 0.036 and 2|x||δ| <= 0.43, 11 terms reach a few 1e−15
+// relative (measured against quadrature of F over the quadrant: 9 terms 1e−12, 10 terms 3e−14); a 0.1 grid
+// needed 18, and the shorter Horner chain outweighs the larger table (3 MB, ~1.2 MB of it in the sector
+// 0 <= arg x <= π/4 the kernel uses). The Taylor
 // coefficients c_0 = Φ(x0), c_{k+1} = F⁽ᵏ⁾(x0)/(k+1)! are stored per node, so that evaluation is Horner's rule
 // (Φ = Σ c_k δ^k, F = Φ' = Σ k c_k δ^{k−1}): this lookup is the hot spot of the strip-kernel build.
-constexpr double kGridStep = 0.1;
-constexpr int kGridN = 61;
-constexpr int kTaylorTerms = 18;
+constexpr double kGridStep = 0.05;
+constexpr double kInvGridStep = 20.0;
+constexpr int kGridN = 122;
+constexpr int kTaylorTerms = 11;
 constexpr int kCoefficients = kTaylorTerms + 2;  // c_0 .. c_{T+1}
 struct PhiTable {
   std::vector<cd> coef;  // node-major, kCoefficients per node
+  cd* At(int i, int j) { return &coef[static_cast<std::size_t>((i * (kGridN + 1) + j) * kCoefficients)]; }
+  // Σ_{k>=1} c_k δ^k = Φ(x0 + δ) − Φ(x0) from the node's F coefficients.
+  static cd Increment(const cd* c, cd d) {
+    cd sum = c[kCoefficients - 1];
+    for (int k = kCoefficients - 2; k >= 1; --k) sum = sum * d + c[k];
+    return sum * d;
+  }
+  // Φ at node (i, j) from Φ at its neighbour (i0, j0): the integral of F over each half of the step from the
+  // Taylor series of the nearer node (|δ| = h/2, inside the series' accuracy radius).
+  void Step(int i0, int j0, int i, int j) {
+    const cd d(0.5 * (i - i0) * kGridStep, 0.5 * (j - j0) * kGridStep);
+    cd* c = At(i, j);
+    c[0] = At(i0, j0)[0] + Increment(At(i0, j0), d) - Increment(c, -d);
+  }
+  // F and its derivatives from libcerf at every node (the only special-function calls), then Φ by
+  // integrating F along the real axis and up each column: ~4000 Dawson calls instead of a quadrature per
+  // node, so that start-up is not spent here (a few ms once; each step adds ~1e−16 relative).
   PhiTable() : coef(static_cast<std::size_t>((kGridN + 1) * (kGridN + 1) * kCoefficients)) {
     for (int i = 0; i <= kGridN; ++i)
       for (int j = 0; j <= kGridN; ++j) {
         const cd x(i * kGridStep, j * kGridStep);
-        cd* c = &coef[static_cast<std::size_t>((i * (kGridN + 1) + j) * kCoefficients)];
-        c[0] = DawsonIntegralQuadrature(x);
+        cd* c = At(i, j);
         cd fk_prev = Dawson(x), fk = 1.0 - 2.0 * x * fk_prev;  // F⁽⁰⁾, F⁽¹⁾
         double factorial = 1.0;                                // (k+1)!
         c[1] = fk_prev;
@@ -136,27 +124,40 @@ struct PhiTable {
           fk = next;
         }
       }
+    At(0, 0)[0] = 0.0;  // Φ(0)
+    for (int i = 1; i <= kGridN; ++i) Step(i - 1, 0, i, 0);
+    for (int i = 0; i <= kGridN; ++i)
+      for (int j = 1; j <= kGridN; ++j) Step(i, j - 1, i, j);
   }
 };
 const PhiTable& Table() {
-  static const PhiTable table;  // thread-safe initialisation (C++11), ~0.1 s once
+  static const PhiTable table;  // thread-safe initialisation (C++11), once
   return table;
 }
 
 const cd* NodeCoefficients(cd x, cd* delta) {
   // x is in the first quadrant: rounding by +0.5 truncation (cheaper than lround on this hot path).
-  const int i = static_cast<int>(x.real() / kGridStep + 0.5);
-  const int j = static_cast<int>(x.imag() / kGridStep + 0.5);
+  // Multiplication by 1/step rather than division: a point halfway between nodes may round to either, and
+  // both are within the Taylor radius.
+  const int i = static_cast<int>(x.real() * kInvGridStep + 0.5);
+  const int j = static_cast<int>(x.imag() * kInvGridStep + 0.5);
   *delta = x - cd(i * kGridStep, j * kGridStep);
   return &Table().coef[static_cast<std::size_t>((i * (kGridN + 1) + j) * kCoefficients)];
 }
 
+// Horner's rule in real arithmetic: std::complex multiplication carries a NaN/infinity recovery branch
+// (C99 Annex G) on every step; the values here are finite, and the products are the same.
 cd DawsonIntegralTableOnly(cd x) {
   cd d;
   const cd* c = NodeCoefficients(x, &d);
-  cd phi = c[kCoefficients - 1];
-  for (int k = kCoefficients - 2; k >= 0; --k) phi = phi * d + c[k];
-  return phi;
+  const double dr = d.real(), di = d.imag();
+  double pr = c[kCoefficients - 1].real(), pi = c[kCoefficients - 1].imag();
+  for (int k = kCoefficients - 2; k >= 0; --k) {
+    const double t = pr * dr - pi * di + c[k].real();
+    pi = pr * di + pi * dr + c[k].imag();
+    pr = t;
+  }
+  return {pr, pi};
 }
 
 // Φ and F together from the table.
@@ -167,13 +168,69 @@ PhiAndF DawsonIntegralTable(cd x) {
   cd d;
   const cd* c = NodeCoefficients(x, &d);
   constexpr int M = kCoefficients - 1;
-  cd phi = c[M], f = static_cast<double>(M) * c[M];
+  const double dr = d.real(), di = d.imag();
+  double pr = c[M].real(), pi = c[M].imag();
+  double fr = M * pr, fi = M * pi;
   for (int k = M - 1; k >= 1; --k) {
-    phi = phi * d + c[k];
-    f = f * d + static_cast<double>(k) * c[k];
+    const double t = pr * dr - pi * di + c[k].real();
+    pi = pr * di + pi * dr + c[k].imag();
+    pr = t;
+    const double u = fr * dr - fi * di + k * c[k].real();
+    fi = fr * di + fi * dr + k * c[k].imag();
+    fr = u;
   }
-  phi = phi * d + c[0];
-  return {phi, f};
+  const double t = pr * dr - pi * di + c[0].real();
+  pi = pr * di + pi * dr + c[0].imag();
+  return {cd(t, pi), cd(fr, fi)};
+}
+
+// The same for L points at once, their Horner chains interleaved: each chain is a sequence of dependent
+// multiply-adds (latency-bound), so independent chains fill the pipeline; the arithmetic per point is that
+// of DawsonIntegralTableOnly / DawsonIntegralTable.
+template <int L>
+void DawsonIntegralTableOnlyN(const cd* x, cd* phi) {
+  double dr[L], di[L], pr[L], pi[L];
+  const cd* c[L];
+  for (int n = 0; n < L; ++n) {
+    cd d;
+    c[n] = NodeCoefficients(x[n], &d);
+    dr[n] = d.real(), di[n] = d.imag();
+    pr[n] = c[n][kCoefficients - 1].real(), pi[n] = c[n][kCoefficients - 1].imag();
+  }
+  for (int k = kCoefficients - 2; k >= 0; --k)
+    for (int n = 0; n < L; ++n) {
+      const double t = pr[n] * dr[n] - pi[n] * di[n] + c[n][k].real();
+      pi[n] = pr[n] * di[n] + pi[n] * dr[n] + c[n][k].imag();
+      pr[n] = t;
+    }
+  for (int n = 0; n < L; ++n) phi[n] = cd(pr[n], pi[n]);
+}
+
+template <int L>
+void DawsonIntegralTableN(const cd* x, PhiAndF* out) {
+  constexpr int M = kCoefficients - 1;
+  double dr[L], di[L], pr[L], pi[L], fr[L], fi[L];
+  const cd* c[L];
+  for (int n = 0; n < L; ++n) {
+    cd d;
+    c[n] = NodeCoefficients(x[n], &d);
+    dr[n] = d.real(), di[n] = d.imag();
+    pr[n] = c[n][M].real(), pi[n] = c[n][M].imag();
+    fr[n] = M * pr[n], fi[n] = M * pi[n];
+  }
+  for (int k = M - 1; k >= 1; --k)
+    for (int n = 0; n < L; ++n) {
+      const double t = pr[n] * dr[n] - pi[n] * di[n] + c[n][k].real();
+      pi[n] = pr[n] * di[n] + pi[n] * dr[n] + c[n][k].imag();
+      pr[n] = t;
+      const double u = fr[n] * dr[n] - fi[n] * di[n] + k * c[n][k].real();
+      fi[n] = fr[n] * di[n] + fi[n] * dr[n] + k * c[n][k].imag();
+      fr[n] = u;
+    }
+  for (int n = 0; n < L; ++n) {
+    const double t = pr[n] * dr[n] - pi[n] * di[n] + c[n][0].real();
+    out[n] = {cd(t, pr[n] * di[n] + pi[n] * dr[n] + c[n][0].imag()), cd(fr[n], fi[n])};
+  }
 }
 
 // Σ_{n>=1} c_n/(2n) x^{−2n}: the algebraic part of Φ − ½ ln x − (γ + ln 4)/4 (with a minus sign).
@@ -263,28 +320,30 @@ TransientGreenValues TransientGreen(double Y, double Z, double t, double g) {
 
 cd TransientGreenTimeIntegral(double Y, double Z, double t, double g) {
   CheckArguments(Y, Z, t, g);
-  const Arg s = MakeArg(std::fabs(Y), Z, t, g);
-  return ConjIf(Y < 0, 8.0 * DawsonIntegral(s.x));
+  return TransientGreenTimeIntegral(MakeTransientGreenPair(Y, Z, g), t);
 }
 
-cd TransientGreenSpaceTimeIntegral(double Y, double Z, double t, double g) {
-  CheckArguments(Y, Z, t, g);
-  if (t == 0.0) return 0.0;
-  const Arg s = MakeArg(std::fabs(Y), Z, t, g);
-  const cd x = s.x, a = s.a;
+namespace {
+
+// K inside the table's radius from Φ and F at x.
+cd KFromTable(cd x, cd a, double gt2, cd log_x, const PhiAndF& pf) {
+  return -8.0 * a * (pf.phi + x * pf.f) + 2.0 * gt2 * (log_x - 2.0 * pf.phi + 2.0 * kPhiConstant);
+}
+
+// K at x for |Y| (first quadrant), with a = |Z| − i|Y|, gt² [m²] and ln x.
+cd SpaceTimeIntegralFirstQuadrant(cd x, cd a, double gt2, cd log_x) {
   cd K;
   if (std::norm(x) < kAsymptoticRadius * kAsymptoticRadius) {
     // K = −8a(Φ + xF) + 2gt²(ln x − 2Φ + 2C): dK/da = −8Φ (F' = 1 − 2xF, dx/da = −x/2a), so dK/dζc = 8Φ.
     // The constant 4C·gt² makes it the same function as the asymptotic form below; here gt² = 4a x² <= 144|a|,
     // so the cancellation inside the bracket costs at most ~2 digits.
-    const PhiAndF pf = DawsonIntegralTable(x);
-    K = -8.0 * a * (pf.phi + x * pf.f) + 2.0 * g * t * t * (LogFirstQuadrant(x) - 2.0 * pf.phi + 2.0 * kPhiConstant);
+    K = KFromTable(x, a, gt2, log_x, DawsonIntegralTable(x));
   } else {
     // ln x − 2Φ + 2C = 2Σ c_n/(2n) x^{−2n} + i(π/2) erfc(x) with gt² = 4a x²: no gt²-sized cancellation left.
     CheckAsymptoticSector(x);
     const cd erfc = ErfcFirstQuadrant(x);
     const cd series = PhiAlgebraicSeries(x);
-    const cd phi = kPhiConstant + 0.5 * LogFirstQuadrant(x) - series - kI * (M_PI / 4.0) * erfc;
+    const cd phi = kPhiConstant + 0.5 * log_x - series - kI * (M_PI / 4.0) * erfc;
     // F ~ Σ c_n x^{−(2n+1)} + i(√π/2) e^{−x²}; xF is needed.
     const auto& c = AsymptoticCoefficients();
     const cd inv2 = 1.0 / (x * x);
@@ -300,7 +359,67 @@ cd TransientGreenSpaceTimeIntegral(double Y, double Z, double t, double g) {
     const cd exp_part = (x2.real() < 40.0) ? x * kI * (0.5 * kSqrtPi) * std::exp(-x2) : cd(0.0);
     K = -8.0 * a * (phi + xf + exp_part) + 16.0 * a * x2 * series + 4.0 * M_PI * kI * a * x2 * erfc;
   }
-  return ConjIf(Y < 0, K);
+  return K;
+}
+
+}  // namespace
+
+TransientGreenPair MakeTransientGreenPair(double Y, double Z, double g) {
+  CheckArguments(Y, Z, 0.0, g);
+  // Principal √a of a = |Z| − i|Y| with real arithmetic only (√a = (sqrt((r + |Z|)/2), −sqrt((r − |Z|)/2)),
+  // r = |a| = |√a|²), and w = √g/(2√a) = √g conj(√a)/(2r).
+  const double p = -Z, Yabs = std::fabs(Y), r = std::sqrt(p * p + Yabs * Yabs);
+  const double scale = std::sqrt(g) / (2.0 * r);
+  TransientGreenPair out;
+  out.a = cd(p, -Yabs);
+  out.w = cd(scale * std::sqrt(0.5 * (r + p)), scale * std::sqrt(0.5 * std::fmax(r - p, 0.0)));
+  out.log_w = LogFirstQuadrant(out.w);
+  out.conj = Y < 0;
+  return out;
+}
+
+cd TransientGreenTimeIntegral(const TransientGreenPair& pair, double t) {
+  return ConjIf(pair.conj, 8.0 * DawsonIntegral(t * pair.w));
+}
+
+cd TransientGreenSpaceTimeIntegral(const TransientGreenPair& pair, double t, double log_t, double g) {
+  const cd x = t * pair.w;
+  return ConjIf(pair.conj, SpaceTimeIntegralFirstQuadrant(x, pair.a, g * t * t, cd(log_t, 0.0) + pair.log_w));
+}
+
+cd TransientGreenSpaceTimeIntegral(double Y, double Z, double t, double g) {
+  CheckArguments(Y, Z, t, g);
+  if (t == 0.0) return 0.0;
+  return TransientGreenSpaceTimeIntegral(MakeTransientGreenPair(Y, Z, g), t, std::log(t), g);
+}
+
+}  // namespace hullopt::sk
+
+namespace hullopt::sk {
+
+void TransientGreenTimeIntegrals2(const TransientGreenPair& pair, const double t[2], cd out[2]) {
+  const cd x[2] = {t[0] * pair.w, t[1] * pair.w};
+  constexpr double r2 = kAsymptoticRadius * kAsymptoticRadius;
+  if (std::norm(x[0]) < r2 && std::norm(x[1]) < r2) {
+    DawsonIntegralTableOnlyN<2>(x, out);
+    for (int n = 0; n < 2; ++n) out[n] = ConjIf(pair.conj, 8.0 * out[n]);
+    return;
+  }
+  for (int n = 0; n < 2; ++n) out[n] = TransientGreenTimeIntegral(pair, t[n]);
+}
+
+void TransientGreenSpaceTimeIntegrals2(const TransientGreenPair& pair, const double t[2], const double log_t[2],
+                                       double g, cd out[2]) {
+  const cd x[2] = {t[0] * pair.w, t[1] * pair.w};
+  constexpr double r2 = kAsymptoticRadius * kAsymptoticRadius;
+  if (std::norm(x[0]) < r2 && std::norm(x[1]) < r2) {
+    PhiAndF pf[2];
+    DawsonIntegralTableN<2>(x, pf);
+    for (int n = 0; n < 2; ++n)
+      out[n] = ConjIf(pair.conj, KFromTable(x[n], pair.a, g * t[n] * t[n], cd(log_t[n], 0.0) + pair.log_w, pf[n]));
+    return;
+  }
+  for (int n = 0; n < 2; ++n) out[n] = TransientGreenSpaceTimeIntegral(pair, t[n], log_t[n], g);
 }
 
 }  // namespace hullopt::sk

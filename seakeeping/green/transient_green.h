@@ -40,6 +40,33 @@ std::complex<double> TransientGreenTimeIntegral(double Y, double Z, double t, do
 /// cancels in the panel difference. Same arguments and errors as TransientGreen; K = 0 at t = 0.
 std::complex<double> TransientGreenSpaceTimeIntegral(double Y, double Z, double t, double g);
 
+/// The lag-independent part of the kernel at one image offset (Y, Z): the square roots, the division and the
+/// logarithm of the geometric argument, computed once per (field point, source point) pair and reused for
+/// every lag, since x(t) = t·w with w = √g/(2√a) (a = |Z| − i|Y|).
+struct TransientGreenPair {
+  std::complex<double> a;      ///< |Z| − i|Y| [m]
+  std::complex<double> w;      ///< x per unit lag [1/s], 0 <= arg w <= π/4
+  std::complex<double> log_w;  ///< ln w
+  bool conj = false;           ///< Y < 0: every result is the conjugate of the |Y| one
+};
+
+/// The pair of (Y, Z) [m] with gravity g [m/s²]. Same errors as TransientGreen (without the lag).
+TransientGreenPair MakeTransientGreenPair(double Y, double Z, double g);
+
+/// H⁽⁻¹⁾ at lag t >= 0 [s] for a prepared pair (no argument checks: the strip kernel's hot path).
+std::complex<double> TransientGreenTimeIntegral(const TransientGreenPair& pair, double t);
+
+/// K at lag t > 0 [s] for a prepared pair, with log_t = ln t (shared by all pairs at one lag) and g [m/s²].
+/// K = 0 for t = 0 is the caller's case (ln 0 is not finite).
+std::complex<double> TransientGreenSpaceTimeIntegral(const TransientGreenPair& pair, double t, double log_t,
+                                                     double g);
+
+/// The two functions above at two lags t[0], t[1] > 0 of one pair, the table evaluations interleaved (the
+/// strip kernel needs both ends of each time interval): out[n] is the value at t[n].
+void TransientGreenTimeIntegrals2(const TransientGreenPair& pair, const double t[2], std::complex<double> out[2]);
+void TransientGreenSpaceTimeIntegrals2(const TransientGreenPair& pair, const double t[2], const double log_t[2],
+                                       double g, std::complex<double> out[2]);
+
 /// Complex Dawson function F(x) = e^{−x²} ∫_0^x e^{u²} du (libcerf).
 std::complex<double> Dawson(std::complex<double> x);
 

@@ -1,6 +1,7 @@
 #include "seakeeping/motions/strip_theory_stf.h"
 
 #include <cmath>
+#include <exception>
 #include <map>
 #include <memory>
 #include <mutex>
@@ -79,18 +80,36 @@ std::vector<HeadSeaCoefficients> StripTheoryCoefficients(const HeadSeaShipModel&
                                                          const SectionRowProvider& rows) {
   if (omega_rad_s.empty()) throw std::invalid_argument("RAO sweep: the frequency list is empty");
   const int N = model.Steps();
-  std::vector<HeadSeaCoefficients> out;
-  for (double w : omega_rad_s) {
+  const int nf = static_cast<int>(omega_rad_s.size());
+  std::vector<double> encounter(nf);
+  for (int i = 0; i < nf; ++i) {
+    const double w = omega_rad_s[i];
     if (!(w > 0.0) || !std::isfinite(w))
       throw std::invalid_argument("RAO sweep: wave frequency " + std::to_string(w) + " rad/s must be > 0");
-    const double we = HeadSeaEncounterFrequency(w, model.speed(), model.g());
-    std::vector<Eigen::RowVectorXcd> r(N);
-    for (int n = 0; n < N; ++n) {
-      r[n] = rows(n, we);
+    encounter[i] = HeadSeaEncounterFrequency(w, model.speed(), model.g());
+  }
+  // Every (frequency, station) section problem is independent: all of them in one parallel loop (each row
+  // computed by one thread, so the rows are the same for any thread count), then the serial assembly.
+  std::vector<std::vector<Eigen::RowVectorXcd>> all_rows(nf, std::vector<Eigen::RowVectorXcd>(N));
+  std::exception_ptr failure = nullptr;
+#pragma omp parallel for schedule(dynamic, 1)
+  for (int job = 0; job < nf * N; ++job) {
+    try {
+      all_rows[job / N][job % N] = rows(job % N, encounter[job / N]);
+    } catch (...) {
+#pragma omp critical(strip_theory_rows)
+      if (!failure) failure = std::current_exception();
+    }
+  }
+  if (failure) std::rethrow_exception(failure);
+  std::vector<HeadSeaCoefficients> out;
+  for (int i = 0; i < nf; ++i) {
+    const double w = omega_rad_s[i], we = encounter[i];
+    const std::vector<Eigen::RowVectorXcd>& r = all_rows[i];
+    for (int n = 0; n < N; ++n)
       if (r[n].size() != model.stations()[n].nz.size())
         throw std::invalid_argument("strip theory: section row size differs from the panel count at step " +
                                     std::to_string(n));
-    }
     // f = (iω_e − U∂x)[F/(iω_e)] = F − (U/iω_e) ∂x F with F = R·Ṽ the 2D force of the section at x_n, the
     // x-derivative a backward difference along the strip (step n − 1 lies Δx forward):
     //   f_n = F_n + (F_n − F_{n−1})/(iω_e Δt).

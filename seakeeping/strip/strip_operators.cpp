@@ -42,42 +42,87 @@ FieldSet MakeFieldSet(const std::vector<Panel>& panels, int points_per_panel) {
   return f;
 }
 
-// Memory of the sources on `src` at one lag level s, to be differenced over an interval:
+// Memory of the sources on `src` at lag levels s (each to be differenced over an interval):
 // nv(i, j) = (1/2π) ∫_panel ∂H⁽⁻¹⁾/∂n_i ds (real part taken), pl(j) = −(ρ/2π) Σ_q wnz_q ∫_panel Re H⁽⁻¹⁾ ds.
 struct Level {
   Eigen::MatrixXd nv;
   Eigen::RowVectorXd pl;
 };
 
-// Without `velocity` only pl is computed (nv stays zero).
-Level ComputeLevel(const FieldSet& f, const std::vector<Panel>& src, double s, double g, double rho,
-                   bool velocity = true) {
+// The source panels as the kernel sees them: distinct end points (adjacent panels of one contour share
+// one) and per panel its two end-point indices and i e^{−iα} (dζc/ds = −i e^{iα}).
+struct SourceEnds {
+  std::vector<double> y, z;  // per end point
+  std::vector<int> first, second;
+  std::vector<std::complex<double>> i_e_minus_ialpha;
+};
+
+SourceEnds MakeSourceEnds(const std::vector<Panel>& src) {
+  SourceEnds e;
+  for (std::size_t j = 0; j < src.size(); ++j) {
+    const Panel& p = src[j];
+    if (j == 0 || !(src[j - 1].y2 == p.y1 && src[j - 1].z2 == p.z1)) e.y.push_back(p.y1), e.z.push_back(p.z1);
+    e.first.push_back(static_cast<int>(e.y.size()) - 1);
+    e.y.push_back(p.y2), e.z.push_back(p.z2);
+    e.second.push_back(static_cast<int>(e.y.size()) - 1);
+    const double L = p.Length();
+    e.i_e_minus_ialpha.emplace_back((p.z2 - p.z1) / L, (p.y2 - p.y1) / L);  // i·((y2−y1) − i(z2−z1))/L
+  }
+  return e;
+}
+
+// All levels at once: the lag-independent part of the kernel (square roots, division, logarithm of each
+// field-point/end-point offset) is computed once and shared by the lags. Lag 0 gives a zero level. Without
+// `velocity` only pl is computed (nv stays zero).
+std::vector<Level> ComputeLevels(const FieldSet& f, const std::vector<Panel>& src, const std::vector<double>& lags,
+                                 double g, double rho, bool velocity = true) {
   const int nf = static_cast<int>(f.cy.size()), ns = static_cast<int>(src.size());
-  Level out{Eigen::MatrixXd::Zero(velocity ? nf : 0, ns), Eigen::RowVectorXd::Zero(ns)};
-  if (s == 0.0 || ns == 0) return out;
-  // Adjacent panels of one contour share an end point: evaluate the kernel there once.
-  std::vector<char> shared(ns, 0);
-  for (int j = 1; j < ns; ++j) shared[j] = src[j - 1].y2 == src[j].y1 && src[j - 1].z2 == src[j].z1;
-  std::vector<std::complex<double>> h1(ns), h2(ns);
+  const int nl = static_cast<int>(lags.size());
+  std::vector<Level> out(nl, Level{Eigen::MatrixXd::Zero(velocity ? nf : 0, ns), Eigen::RowVectorXd::Zero(ns)});
+  if (ns == 0) return out;
+  const SourceEnds e = MakeSourceEnds(src);
+  const int ne = static_cast<int>(e.y.size());
+  std::vector<double> log_lag(nl, 0.0);
+  for (int l = 0; l < nl; ++l) log_lag[l] = lags[l] > 0.0 ? std::log(lags[l]) : 0.0;
+  std::vector<std::complex<double>> h(static_cast<std::size_t>(ne) * nl);
+  const bool both_positive = nl == 2 && lags[0] > 0.0 && lags[1] > 0.0;  // the interleaved two-lag form
   for (int i = 0; velocity && i < nf; ++i) {
+    for (int q = 0; q < ne; ++q) {
+      const TransientGreenPair pair = MakeTransientGreenPair(f.cy[i] - e.y[q], f.cz[i] + e.z[q], g);
+      if (both_positive)
+        TransientGreenTimeIntegrals2(pair, lags.data(), &h[q * nl]);
+      else
+        for (int l = 0; l < nl; ++l) h[q * nl + l] = lags[l] > 0.0 ? TransientGreenTimeIntegral(pair, lags[l]) : 0.0;
+    }
+    // (1/2π) Re[(n_z + i n_y) i e^{−iα} (ΔH⁽⁻¹⁾(q2) − ΔH⁽⁻¹⁾(q1))] (memory_influence.h).
+    const std::complex<double> n(f.nz[i], f.ny[i]);
     for (int j = 0; j < ns; ++j) {
-      const Panel& p = src[j];
-      h1[j] = shared[j] ? h2[j - 1] : TransientGreenTimeIntegral(f.cy[i] - p.y1, f.cz[i] + p.z1, s, g);
-      h2[j] = TransientGreenTimeIntegral(f.cy[i] - p.y2, f.cz[i] + p.z2, s, g);
-      out.nv(i, j) = MemoryNormalVelocityFromEnds(p, h1[j], h2[j], f.ny[i], f.nz[i]);
+      const std::complex<double> c = kInv2Pi * n * e.i_e_minus_ialpha[j];
+      for (int l = 0; l < nl; ++l)
+        out[l].nv(i, j) = (c * (h[e.second[j] * nl + l] - h[e.first[j] * nl + l])).real();
     }
   }
   // Momentum: Σ_q wnz_q ∫_panel Re H⁽⁻¹⁾ ds, exact along the panel through K (memory_influence.h).
-  for (std::size_t q = 0; q < f.qy.size(); ++q) {
-    for (int j = 0; j < ns; ++j) {
-      const Panel& p = src[j];
-      h1[j] = shared[j] ? h2[j - 1] : TransientGreenSpaceTimeIntegral(f.qy[q] - p.y1, f.qz[q] + p.z1, s, g);
-      h2[j] = TransientGreenSpaceTimeIntegral(f.qy[q] - p.y2, f.qz[q] + p.z2, s, g);
-      out.pl(j) += f.wnz[q] * MemoryPotentialLevelFromEnds(p, h1[j], h2[j]);
+  for (std::size_t p = 0; p < f.qy.size(); ++p) {
+    for (int q = 0; q < ne; ++q) {
+      const TransientGreenPair pair = MakeTransientGreenPair(f.qy[p] - e.y[q], f.qz[p] + e.z[q], g);
+      if (both_positive)
+        TransientGreenSpaceTimeIntegrals2(pair, lags.data(), log_lag.data(), g, &h[q * nl]);
+      else
+        for (int l = 0; l < nl; ++l)
+          h[q * nl + l] = lags[l] > 0.0 ? TransientGreenSpaceTimeIntegral(pair, lags[l], log_lag[l], g) : 0.0;
     }
+    for (int j = 0; j < ns; ++j)
+      for (int l = 0; l < nl; ++l)
+        out[l].pl(j) += f.wnz[p] * (e.i_e_minus_ialpha[j] * (h[e.second[j] * nl + l] - h[e.first[j] * nl + l])).real();
   }
-  out.pl *= -rho * kInv2Pi;
+  for (auto& level : out) level.pl *= -rho * kInv2Pi;
   return out;
+}
+
+Level ComputeLevel(const FieldSet& f, const std::vector<Panel>& src, double s, double g, double rho,
+                   bool velocity = true) {
+  return std::move(ComputeLevels(f, src, {s}, g, rho, velocity)[0]);
 }
 
 // A lag that is a whole number of half steps, as that number (the key of shared levels).
@@ -352,8 +397,9 @@ StripOperators BuildStripOperators(const std::vector<std::vector<Panel>>& panels
         s1 = (n - k - 0.5) * dt;
         s2 = k == 0 ? n * dt : (n - k + 0.5) * dt;
       }
-      const Level a = reduce(ComputeLevel(f, panels_per_step[k], s1, g, rho), k);
-      const Level b = reduce(ComputeLevel(f, panels_per_step[k], s2, g, rho), k);
+      std::vector<Level> ab = ComputeLevels(f, panels_per_step[k], {s1, s2}, g, rho);
+      const Level a = reduce(std::move(ab[0]), k);
+      const Level b = reduce(std::move(ab[1]), k);
       if (pressure) momentum_level[{k, HalfSteps(s1, dt)}] = a.pl, momentum_level[{k, HalfSteps(s2, dt)}] = b.pl;
       if (k == n) {
         A -= b.nv - a.nv;
