@@ -7,6 +7,7 @@
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   namespace io = hullopt::io;
+  namespace eval = hullopt::eval;
   const std::string path = hullopt::fuzz::WriteScratch(data, size, ".csv");
   try {
     hullopt::hull::HullForm h;
