@@ -9,7 +9,9 @@
 
 #include "app/evaluator_factory.h"
 #include "io/campaign_outputs.h"
+#include "io/evaluation_report.h"
 #include "io/input_error.h"
+#include "evaluation/msi_evaluator.h"
 
 namespace hullopt::app {
 
@@ -20,14 +22,22 @@ LoadedCampaign LoadCampaign(const std::string& config_file, io::CampaignCommand 
   std::optional<io::YamlMap> block;
   out.config = io::ReadCampaignConfig(root, out.raw, command, &block);
   out.evaluator = MakeEvaluator(root, *block, out.config.definition);
+  out.resolution = io::ReadResolutionCheck(root);
+  if (out.resolution.enabled && !dynamic_cast<eval::ResolutionCheckable*>(out.evaluator.get()))
+    throw io::InputError(root.Where("resolution_check") + ": needs the seakeeping objective (an analytic "
+                         "objective has no strip resolution to check)");
   block->Finish();
   root.Finish();
   out.config.definition.known_quantities = out.evaluator->QuantityNames();
   out.config.definition.known_variables = out.evaluator->VariableNames();
   io::ValidateCampaign(out.config, command, config_file);
   out.resolved = root.resolved();
+  // The check refines the report of the best design, not the evaluations: switching it on or off resumes the
+  // same campaign.
+  YAML::Node identity = YAML::Clone(out.resolved);
+  identity.remove("resolution_check");
   YAML::Emitter em;
-  em << out.resolved;
+  em << identity;
   out.config_hash = io::TextHash(em.c_str());
   return out;
 }
@@ -66,6 +76,23 @@ void ReportWarnings(const std::vector<opt::EvaluationRecord>& records, long best
                "hullopt: warning: %ld of %zu evaluations carry a warning (message column of %s); first, "
                "evaluation %ld: %s\n",
                w.count, records.size(), history_file.c_str(), w.first_evaluation, w.first_message.c_str());
+}
+
+std::string CheckBestResolution(const LoadedCampaign& campaign, const std::vector<double>& x, long evaluation,
+                                bool quiet, nlohmann::json* summary) {
+  if (!campaign.resolution.enabled) return "";
+  auto* checkable = dynamic_cast<eval::ResolutionCheckable*>(campaign.evaluator.get());
+  if (!checkable) return "";
+  const sk::ResolutionCheck r = checkable->CheckResolution(x, campaign.resolution.factor, campaign.resolution.options);
+  nlohmann::json j = io::ResolutionCheckJson(r);
+  j["evaluation"] = evaluation;
+  (*summary)["resolution_check"] = j;
+  if (r.converged) return "";
+  const std::string warning = "resolution check of the best design (evaluation " + std::to_string(evaluation) +
+                              "): " + r.warning;
+  (*summary)["resolution_warning"] = warning;
+  if (!quiet) std::fprintf(stderr, "hullopt: warning: %s\n", warning.c_str());
+  return warning;
 }
 
 }  // namespace hullopt::app

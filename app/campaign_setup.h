@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "io/campaign_config.h"
+#include "io/resolution_check_config.h"
 #include "optimizer/evaluation_record.h"
 #include "optimizer/evaluator.h"
 
@@ -20,6 +21,7 @@ struct LoadedCampaign {
   YAML::Node resolved;      ///< resolved tree (config.resolved.yaml)
   std::string config_hash;  ///< io::TextHash of the emitted resolved tree
   std::unique_ptr<opt::Evaluator> evaluator;
+  io::ResolutionCheckConfig resolution;  ///< `resolution_check:` (checks the best design at the end)
 };
 
 /// Reads, validates and builds the evaluator. Throws io::InputError with a one-line message.
@@ -39,5 +41,11 @@ CampaignWarnings CollectWarnings(const std::vector<opt::EvaluationRecord>& recor
 /// unless quiet prints one line to stderr naming the count, the first such evaluation and its warning.
 void ReportWarnings(const std::vector<opt::EvaluationRecord>& records, long best, const std::string& history_file,
                     bool quiet, nlohmann::json* summary);
+
+/// With the campaign's `resolution_check` on, re-runs the design at x (its best) at the finer resolution and adds
+/// a "resolution_check" block to the summary; a design that is not converged adds "resolution_warning" to the
+/// summary and, unless quiet, one line to stderr. Returns that warning ("" when converged or the check is off).
+std::string CheckBestResolution(const LoadedCampaign& campaign, const std::vector<double>& x, long evaluation,
+                                bool quiet, nlohmann::json* summary);
 
 }  // namespace hullopt::app

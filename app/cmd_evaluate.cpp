@@ -38,6 +38,7 @@
 #include "io/input_error.h"
 #include "io/rao_table_csv.h"
 #include "io/resolution_check_config.h"
+#include "evaluation/design_resolution_check.h"
 #include "io/seas_config.h"
 #include "io/operability_config.h"
 #include "io/operability_output.h"
@@ -131,24 +132,13 @@ DesignInput ReadDesign(io::YamlMap& m, const std::string& config_file, double g,
 void CheckResolution(const io::ResolutionCheckConfig& check, const std::vector<sk::WaveSpectrum>& spectra,
                      const std::vector<sk::PassengerPosition>& points, const sk::EvaluationOptions& options,
                      DesignInput* in) {
-  eval::DesignCase fine = *in->computed;
-  fine.solver.rao.sections *= check.factor;
-  fine.solver.rao.panels *= check.factor;
-  if (fine.solver.rao.sections > 400 || fine.solver.rao.panels > 100)
-    throw io::InputError(in->where + ": design '" + in->design.name + "': resolution_check.factor " +
-                         std::to_string(check.factor) + " asks for " + std::to_string(fine.solver.rao.sections) +
-                         " sections x " + std::to_string(fine.solver.rao.panels) +
-                         " panels, beyond the solver's 400 x 100");
-  const sk::RaoTable fine_rao = eval::ComputeDesignRaos(fine, in->design.rao.omega_rad_s, in->cs_override);
-  sk::DesignEvaluation fine_eval;
   try {
-    fine_eval = sk::EvaluateDesign(fine_rao, in->design.hull, spectra, points, options);
-  } catch (const std::exception& e) {
-    throw io::InputError(in->where + ": design '" + in->design.name + "' at the check's resolution: " + e.what());
+    in->design.resolution =
+        eval::CheckDesignResolution(*in->computed, in->design.rao, in->design.evaluation, spectra, points, options,
+                                    check.factor, check.options, in->cs_override);
+  } catch (const eval::InputError& e) {
+    throw io::InputError(in->where + ": " + e.what());
   }
-  in->design.resolution = sk::CompareResolutions(in->design.rao, fine_rao, in->design.evaluation, fine_eval,
-                                                 in->computed->solver.rao.sections, in->computed->solver.rao.panels,
-                                                 fine.solver.rao.sections, fine.solver.rao.panels, check.options);
   if (!in->design.resolution->converged)
     in->design.rao.warnings.push_back("resolution check: " + in->design.resolution->warning);
 }

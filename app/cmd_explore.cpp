@@ -156,6 +156,8 @@ void RunExplore(const ExploreCliOptions& o) {
     s["best_variables"] = bv;
   }
   ReportWarnings(recs, best, journal.path(), o.quiet, &s);
+  const std::string resolution_warning =
+      best >= 0 ? CheckBestResolution(lc, recs[best].x, best, o.quiet, &s) : std::string();
   const auto names = def.VariableNames();
   try {
     const opt::SensitivityResult sens = opt::ComputeSensitivity(fx, fy, names);
@@ -182,7 +184,9 @@ void RunExplore(const ExploreCliOptions& o) {
         "variable values",
         o.config.c_str(), best, recs[best].result.objective);
     io::WriteBestYaml(OutPath(o.out, "best.yaml"), lc.raw, lc.config.block, names, lc.config.start_source,
-                      recs[best].x, comment);
+                      recs[best].x,
+                      resolution_warning.empty() ? std::string(comment)
+                                                 : std::string(comment) + "\n# WARNING: " + resolution_warning);
   }
   if (!o.quiet) {
     std::printf("%zu samples (%zu feasible)", recs.size(), fx.size());

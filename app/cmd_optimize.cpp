@@ -225,6 +225,8 @@ void RunOptimize(const OptimizeOptions& o) {
   }
   s["runs"] = runs;
   ReportWarnings(recs, best, journal.path(), o.quiet, &s);
+  const std::string resolution_warning =
+      best >= 0 ? CheckBestResolution(lc, recs[best].x, best, o.quiet, &s) : std::string();
   s["wall_time_s"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
   io::WriteJson(OutPath(o.out, "summary.json"), s);
   io::WriteOptimizePlots(o.out, recs, def.VariableNames(), def.LowerBounds(), def.UpperBounds(),
@@ -237,7 +239,9 @@ void RunOptimize(const OptimizeOptions& o) {
         "best variable values",
         o.config.c_str(), best, recs[best].result.objective);
     io::WriteBestYaml(OutPath(o.out, "best.yaml"), lc.raw, lc.config.block, def.VariableNames(),
-                      lc.config.start_source, recs[best].x, comment);
+                      lc.config.start_source, recs[best].x,
+                      resolution_warning.empty() ? std::string(comment)
+                                                 : std::string(comment) + "\n# WARNING: " + resolution_warning);
   }
   if (!o.quiet) {
     if (best >= 0) {

@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <stdexcept>
 
+#include "evaluation/design_resolution_check.h"
 #include "evaluation/input_error.h"
 
 namespace hullopt::eval {
@@ -13,7 +14,7 @@ const std::vector<std::string> kQuantities = {"L_m", "B_m",  "T_m",  "B_overall_
                                               "Cp",  "Cwp", "Cvp", "Fr",          "GM_T_m",         "GM_L_m",
                                               "R_T_kN", "R_W_kN", "P_E_kW"};
 
-class MsiEvaluator : public opt::Evaluator {
+class MsiEvaluator : public opt::Evaluator, public ResolutionCheckable {
  public:
   MsiEvaluator(DesignBasis basis, std::vector<const hull::DesignVariableField*> fields, MsiObjectiveOptions o)
       : basis_(std::move(basis)), fields_(std::move(fields)), o_(std::move(o)), spectra_(sk::BuildSpectra(o_.seas)) {}
@@ -69,6 +70,19 @@ class MsiEvaluator : public opt::Evaluator {
                     d.speed_m_s / std::sqrt(d.water.g_m_s2 * h.L_m), h.gm_t_m, h.gm_l_m,
                     rs.R_T_N / 1e3, rs.R_W_N / 1e3, rs.P_E_W / 1e3};
     return r;
+  }
+
+  sk::ResolutionCheck CheckResolution(const std::vector<double>& x, int factor,
+                                      const sk::ResolutionCheckOptions& options) override {
+    const DesignCase d = BuildTrialDesign(basis_, fields_, x);
+    const sk::RaoTable rao = ComputeDesignRaos(d, SeaFrequencies(d));
+    sk::DesignEvaluation ev;
+    try {
+      ev = sk::EvaluateDesign(rao, d.Extent(), spectra_, {}, o_.evaluation);
+    } catch (const std::exception& e) {
+      throw InputError("design '" + d.name + "': " + e.what());
+    }
+    return CheckDesignResolution(d, rao, ev, spectra_, {}, o_.evaluation, factor, options);
   }
 
   double ObjectiveImplied(const std::vector<double>&, const std::vector<double>& sea_values) const override {

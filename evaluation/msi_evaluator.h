@@ -13,6 +13,7 @@
 #include "optimizer/evaluator.h"
 #include "resistance/calm_water_resistance.h"
 #include "seas/design_evaluation.h"
+#include "seas/resolution_check.h"
 
 namespace hullopt::eval {
 
@@ -26,7 +27,18 @@ struct MsiObjectiveOptions {
   res::ResistanceOptions resistance;
 };
 
-/// The evaluator of the campaign variables `variables` (in order) about the base design.
+/// A campaign objective whose design at x can be re-run at a finer strip resolution (the best design's check).
+class ResolutionCheckable {
+ public:
+  virtual ~ResolutionCheckable() = default;
+  /// The design at x computed at its own resolution and at factor x its sections and panels, compared on the
+  /// campaign's frequencies and seas. Throws InputError when x gives no design or the check cannot be made.
+  virtual sk::ResolutionCheck CheckResolution(const std::vector<double>& x, int factor,
+                                              const sk::ResolutionCheckOptions& options) = 0;
+};
+
+/// The evaluator of the campaign variables `variables` (in order) about the base design; it is also a
+/// ResolutionCheckable.
 std::unique_ptr<opt::Evaluator> MakeMsiEvaluator(DesignBasis basis, const std::vector<std::string>& variables,
                                                  MsiObjectiveOptions options);
 

@@ -94,6 +94,23 @@ std::vector<std::string> EvaluationWarnings(const std::vector<EvaluatedDesign>& 
   return w;
 }
 
+nlohmann::json ResolutionCheckJson(const sk::ResolutionCheck& r) {
+  return {{"sections", r.sections},
+          {"panels", r.panels},
+          {"fine_sections", r.fine_sections},
+          {"fine_panels", r.fine_panels},
+          {"heave_peak", r.heave_peak},
+          {"heave_peak_fine", r.heave_peak_fine},
+          {"heave_peak_change", r.heave_peak_change},
+          {"pitch_peak", r.pitch_peak},
+          {"pitch_peak_fine", r.pitch_peak_fine},
+          {"pitch_peak_change", r.pitch_peak_change},
+          {"max_msi_change_pct", r.max_msi_change_pct},
+          {"mean_msi_pct", r.mean_msi_pct},
+          {"fine_mean_msi_pct", r.fine_mean_msi_pct},
+          {"converged", r.converged}};
+}
+
 nlohmann::json EvaluationSummaryJson(const std::vector<EvaluatedDesign>& designs,
                                      const sk::EvaluationOptions& options,
                                      const std::vector<std::string>& warnings) {
@@ -143,21 +160,7 @@ nlohmann::json EvaluationSummaryJson(const std::vector<EvaluatedDesign>& designs
     }
     jd["mean_msi_pct_over_seas"] = mean_msi;
     if (d.resolution) {
-      const sk::ResolutionCheck& r = *d.resolution;
-      jd["resolution_check"] = {{"sections", r.sections},
-                                {"panels", r.panels},
-                                {"fine_sections", r.fine_sections},
-                                {"fine_panels", r.fine_panels},
-                                {"heave_peak", r.heave_peak},
-                                {"heave_peak_fine", r.heave_peak_fine},
-                                {"heave_peak_change", r.heave_peak_change},
-                                {"pitch_peak", r.pitch_peak},
-                                {"pitch_peak_fine", r.pitch_peak_fine},
-                                {"pitch_peak_change", r.pitch_peak_change},
-                                {"max_msi_change_pct", r.max_msi_change_pct},
-                                {"mean_msi_pct", r.mean_msi_pct},
-                                {"fine_mean_msi_pct", r.fine_mean_msi_pct},
-                                {"converged", r.converged}};
+      jd["resolution_check"] = ResolutionCheckJson(*d.resolution);
     }
     j["designs"].push_back(jd);
   }

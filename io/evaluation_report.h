@@ -30,6 +30,9 @@ struct EvaluationReportOptions {
   double truncation_warning_fraction = 0.01;
 };
 
+/// The summary.json block of a resolution check (seas/resolution_check.h), fields as named there.
+nlohmann::json ResolutionCheckJson(const sk::ResolutionCheck& r);
+
 /// Writes msi.csv. Throws io::InputError if the file cannot be written.
 void WriteMsiCsv(const std::string& path, const std::vector<EvaluatedDesign>& designs);
 /// The summary.json document.
