@@ -34,8 +34,10 @@ write_study "$TMP/study.yaml" 20 8 <<< "resolution_check: { enabled: true }"
 grep -q "design 'SW3': resolution check: not converged at 20 sections x 8 panels: at 40 x 16" "$TMP/stderr.txt" \
   || fail "no resolution warning for SW3 on stderr: $(cat "$TMP/stderr.txt")"
 grep -q "NPL5b': resolution check" "$TMP/stderr.txt" && fail "NPL5b flagged: $(cat "$TMP/stderr.txt")"
-grep '^SW3,' "$TMP/out/msi.csv" | grep -q "resolution check: not converged" || fail "SW3 rows of msi.csv not flagged"
-grep '^NPL5b,' "$TMP/out/msi.csv" | grep -q "resolution check" && fail "NPL5b rows of msi.csv flagged"
+# (Rows to a file first: `grep -q` in a pipe may end before its writer, whose SIGPIPE fails the pipeline.)
+grep '^SW3,' "$TMP/out/msi.csv" > "$TMP/sw3_rows.csv"; grep '^NPL5b,' "$TMP/out/msi.csv" > "$TMP/npl_rows.csv"
+grep -q "resolution check: not converged" "$TMP/sw3_rows.csv" || fail "SW3 rows of msi.csv not flagged"
+grep -q "resolution check" "$TMP/npl_rows.csv" && fail "NPL5b rows of msi.csv flagged"
 /usr/bin/python3 - "$TMP/out/summary.json" <<'PY' || fail "summary.json"
 import json, sys
 j = json.load(open(sys.argv[1]))
