@@ -85,7 +85,7 @@ explore:
   objective: { measure: msi, position: mean, sea_weights: [1, 1] }
 YAML
 "$HULLOPT" explore "$work/msi.yaml" --out "$work/msi" --quiet 2> "$work/msi.err" || { cat "$work/msi.err" >&2; fail "MSI explore failed"; }
-sea=$(head -1 "$work/msi/samples.csv" | tr ',' '\n' | grep -m1 '^msi_pct_Hs1')
+sea=$(awk -F, 'NR == 1 { for (i = 1; i <= NF; ++i) if ($i ~ /^msi_pct_Hs1/) { print $i; exit } }' "$work/msi/samples.csv")
 for edit in "nan:must be finite" "0.5:give"; do
   v=${edit%%:*}; pat=${edit#*:}
   rm -rf "$work/msi_$v"; cp -r "$work/msi" "$work/msi_$v"

@@ -19,7 +19,7 @@ YAML
 
 base "{ Fn: 0.75 }" "{ lambda_over_L: [1.0, 1.5, 2.0] }" > "$tmp/ok.yaml"
 "$bin" rao "$tmp/ok.yaml" --out "$tmp/ok" || fail "good config refused"
-header=$(grep -v '^#' "$tmp/ok/rao.csv" | head -1)
+header=$(awk '!/^#/ { print; exit }' "$tmp/ok/rao.csv")
 [ "$header" = "omega_e_rad_s,omega_rad_s,lambda_over_L,heave_amp,heave_phase_deg,pitch_amp,pitch_phase_deg" ] ||
   fail "rao.csv header: $header"
 [ "$(grep -v '^#' "$tmp/ok/rao.csv" | wc -l)" = 4 ] || fail "rao.csv should have 3 rows"
