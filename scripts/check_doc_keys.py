@@ -279,7 +279,7 @@ def check_links():
     for page in pages:
         text = open(page, encoding="utf-8").read()
         rel = os.path.relpath(page, ROOT)
-        for bad in ("ARCHITECTURE", "../shared", "/work/"):
+        for bad in ("ARCHITECTURE", "../shared", "/work/", "theory-notes", "theory notes"):
             if bad in text:
                 errors += fail("%s refers to '%s', outside the repository" % (rel, bad))
         for target in re.findall(r"\]\(([^)\s]+)\)", text):
