@@ -44,6 +44,10 @@ READ_WHEN_PRESENT = {
 }
 
 
+# Keys that once appeared in the documentation and that every command refuses.
+REFUSED_KEYS = ["heading_deg"]
+
+
 def fail(msg):
     print("FAIL " + msg)
     return 1
@@ -282,6 +286,9 @@ def check_links():
         for bad in ("ARCHITECTURE", "../shared", "/work/", "theory-notes", "theory notes"):
             if bad in text:
                 errors += fail("%s refers to '%s', outside the repository" % (rel, bad))
+        for key in REFUSED_KEYS:
+            if key in text:
+                errors += fail("%s documents `%s`, a key every command refuses" % (rel, key))
         for target in re.findall(r"\]\(([^)\s]+)\)", text):
             if re.match(r"^[a-z]+:", target) or target.startswith("#"):
                 continue
