@@ -177,7 +177,7 @@ RUNS = [
 
 def anchor(heading):
     """The anchor of a Markdown heading, as GitHub makes it."""
-    return re.sub(r"\s+", "-", re.sub(r"[^\w\s-]", "", heading.strip().lower()))
+    return re.sub(r" ", "-", re.sub(r"[^\w\s-]", "", heading.strip().lower()))
 
 
 def tables(path):
@@ -292,9 +292,14 @@ def check_links():
         for target in re.findall(r"\]\(([^)\s]+)\)", text):
             if re.match(r"^[a-z]+:", target) or target.startswith("#"):
                 continue
-            path = target.split("#")[0]
-            if not os.path.exists(os.path.normpath(os.path.join(os.path.dirname(page), path))):
+            path, _, fragment = target.partition("#")
+            full = os.path.normpath(os.path.join(os.path.dirname(page), path))
+            if not os.path.exists(full):
                 errors += fail("%s: link to %s: no such file" % (rel, target))
+            elif fragment and full.endswith(".md"):
+                anchors = {anchor(h) for h in re.findall(r"^#+\s+(.*)$", open(full, encoding="utf-8").read(), re.M)}
+                if fragment not in anchors:
+                    errors += fail("%s: link to %s: no such heading" % (rel, target))
     return errors
 
 
