@@ -1,6 +1,6 @@
 // `hullopt section CONFIG --out DIR`: heave added mass and damping per unit length of a 2D section (or of
 // several identical sections side by side in one strip) from the chosen 2D solvers, written to section.csv
-// (ARCHITECTURE §4) and plotted nondimensionally in section.svg.
+// (docs/file-formats.md) and plotted nondimensionally in section.svg.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>

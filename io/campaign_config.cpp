@@ -13,7 +13,7 @@ CampaignConfig ReadCampaignConfig(YamlMap& root, const YAML::Node& raw_root, Cam
   cfg.block = (explore && root.Has("explore")) ? "explore" : "optimize";
   if (!root.Has(cfg.block)) {
     throw InputError(root.file() + ": missing the '" + cfg.block + "' block (" +
-                     (explore ? "explore reads 'explore:' or 'optimize:'" : "see ARCHITECTURE §4") + ")");
+                     (explore ? "explore reads 'explore:' or 'optimize:'" : "see docs/campaigns.md") + ")");
   }
   if (explore && cfg.block == "explore") root.Skip("optimize");
   if (!explore) root.Skip("explore");
