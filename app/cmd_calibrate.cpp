@@ -1,4 +1,4 @@
-// hullopt calibrate CONFIG --out DIR: fits the damping coefficient Cs to tank RAOs (issue 7).
+// hullopt calibrate CONFIG --out DIR: fits the damping coefficient Cs to tank RAOs (docs/calibration.md).
 #include <glog/logging.h>
 
 #include <cctype>

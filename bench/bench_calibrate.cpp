@@ -1,7 +1,7 @@
 // Wall time of one Cs calibration (one hull, one speed: Delft 372 at Fn 0.75, 13 points, heave and pitch)
 // with the synthetic oscillator model: the fit's own overhead (Ceres, numeric differentiation, covariance,
 // peaks). With the strip solver, add model_evaluations × (cost of one RAO evaluation at the measured
-// frequencies). Issue 7 item 3 asks for under 5 s wall for the whole calibration.
+// frequencies). Target: under 5 s wall for the whole calibration.
 #include <benchmark/benchmark.h>
 
 #include <chrono>

@@ -1,4 +1,4 @@
-// Generation plus hydrostatics of one hull (issue 2 target: under 10 ms), for the four hull types.
+// Generation plus hydrostatics of one hull (target: under 10 ms), for the four hull types.
 #include <benchmark/benchmark.h>
 
 #include "parametric_hull/hull_generator.h"

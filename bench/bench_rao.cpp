@@ -1,4 +1,4 @@
-// RAO sweep timing (issue 4, item 5): 60 frequencies, 40 sections × 14 panels, one demihull (Delft 372 at
+// RAO sweep timing: 60 frequencies, 40 sections × 14 panels, one demihull (Delft 372 at
 // Fn 0.75, the paper's transient Green-function kernel). Periodic path (2b) with 1 and 2 OpenMP threads, the
 // time-marching path (2a) on the same sweep, and the kernel build (once per hull and speed) with 1 and 2
 // threads, also with the strip steps at the cell faces (41 steps, StationLayout::kCellFaces) and with the

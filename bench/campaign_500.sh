@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Issue 6 item 4: 500 evaluations of the default campaign (configs/optimize-catamaran.yaml: parametric catamaran
+# 500 evaluations of the default campaign (configs/optimize-catamaran.yaml: parametric catamaran
 # → 40×14 time-domain strip RAOs → MSI in two seas), timed as whole CLI runs:
 #   explore, 500 Sobol samples: 1 thread, 2 threads (2 samples at a time), mpirun -n 2 (1 thread per rank);
 #   optimize, GN_ISRES capped at 500 evaluations (one evaluation at a time, kernel parallel): 1 and 2 threads.

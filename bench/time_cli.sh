@@ -3,8 +3,8 @@
 # REPEAT times into fresh output folders and prints every wall time and the median, with the core count.
 # Usage: bash bench/time_cli.sh [REPEAT] -- hullopt-args...   (the binary: $HULLOPT, default build/app/hullopt)
 # Examples:
-#   bash bench/time_cli.sh 5 -- evaluate configs/davis-holloway-2003.yaml     # issue 5 item 4: 14-hull study
-#   bash bench/time_cli.sh 3 -- calibrate examples/calibrate_delft372.yaml   # issue 7 item 3
+#   bash bench/time_cli.sh 5 -- evaluate configs/davis-holloway-2003.yaml     # the 14-hull study
+#   bash bench/time_cli.sh 3 -- calibrate examples/calibrate_delft372.yaml   # one Cs calibration
 set -euo pipefail
 repeat=${1:-5}
 shift

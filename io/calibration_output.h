@@ -1,7 +1,7 @@
 #pragma once
-// What `hullopt calibrate` leaves in its output folder besides the plot: calibration.json (ARCHITECTURE §4
-// keys `Cs`, `Cs_std_error`, `rms_residual`, plus per-point residuals, reduced chi-square, peaks before and
-// after) and hull-config snippets with the fitted Cs.
+// What `hullopt calibrate` leaves in its output folder besides the plot: calibration.json
+// (docs/file-formats.md; keys `Cs`, `Cs_std_error`, `rms_residual`, plus per-point residuals, reduced
+// chi-square, peaks before and after) and hull-config snippets with the fitted Cs.
 #include <string>
 #include <vector>
 

@@ -1,5 +1,5 @@
 #pragma once
-// Reading the `optimize:` / `explore:` block of a campaign config (ARCHITECTURE §4) into an
+// Reading the `optimize:` / `explore:` block of a campaign config (docs/campaigns.md) into an
 // opt::CampaignDefinition, with line-numbered errors.
 //
 //   optimize:

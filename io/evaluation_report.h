@@ -1,5 +1,5 @@
 #pragma once
-// Outputs of `hullopt evaluate` for a set of evaluated designs (ARCHITECTURE §4):
+// Outputs of `hullopt evaluate` for a set of evaluated designs (docs/file-formats.md):
 //   msi.csv       columns exactly design,Hs_m,Tz_s,position,x_from_cg_m,rms_accel_g,msi_pct; per design, per
 //                 sea: forward, lcg, transom, user points, then mean (mean of the three standard positions;
 //                 its x_from_cg_m is empty)

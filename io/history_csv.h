@@ -2,7 +2,7 @@
 // history.csv (optimize) and samples.csv (explore): one row per evaluation, appended and fsync'd as each
 // evaluation completes, read back on restart to resume a campaign without recomputing anything.
 //
-// Columns (ARCHITECTURE §4; the first ones are a contract):
+// Columns (docs/file-formats.md; the first ones are a contract):
 //   evaluation, <design variables by name>, objective, feasible, <per-sea columns>, <constrained quantities>,
 //   wall_time_s, run, step, message
 // Numbers are written with %.17g so that they read back bit-identical. A design the generator refused has

@@ -1,5 +1,5 @@
 #pragma once
-// The `hull:` map (ARCHITECTURE §4) → options, and loading the hull they describe.
+// The `hull:` map (docs/config-reference.md) → options, and loading the hull they describe.
 //   hull:
 //     parametric: {type, displacement_t, L_over_B, B_over_T, Cb, Cp, Cwp, LCB_pct_L, LCF_pct_L, ...}
 //     spacing_m: 20          # optional absolute demihull spacing (else parametric.spacing_over_L)

@@ -1,6 +1,6 @@
 #pragma once
-// hydrostatics.json of `hullopt hull` (ARCHITECTURE §4): L_m, B_m, T_m, volume_m3, displacement_t, Cb, Cp,
-// Cm, Cwp, Cvp, LCB_pct_L, LCF_pct_L, Fr (coefficients per reference hull, see
+// hydrostatics.json of `hullopt hull` (docs/file-formats.md): L_m, B_m, T_m, volume_m3, displacement_t, Cb,
+// Cp, Cm, Cwp, Cvp, LCB_pct_L, LCF_pct_L, Fr (coefficients per reference hull, see
 // parametric_hull/hydrostatics.h), for a multihull also hulls and spacing_m; plus the other hydrostatic
 // quantities with units in their names.
 #include <optional>

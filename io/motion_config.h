@@ -1,6 +1,6 @@
 #pragma once
-// The `solver:` and `mass:` sections of a config (ARCHITECTURE §4) for `hullopt rao` and the commands that
-// compute RAOs.
+// The `solver:` and `mass:` sections of a config (docs/config-reference.md) for `hullopt rao` and the
+// commands that compute RAOs.
 //
 // solver:
 //   method: time_domain_strip        # | strip_theory_stf

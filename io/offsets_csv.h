@@ -1,7 +1,7 @@
 #pragma once
-// Offsets CSV (ARCHITECTURE §4): header x_m,y_m,z_m (further columns ignored), one row per point, the points
-// of one station consecutive from the keel (y = 0) up to the deck edge; x from the AP forward, z from the
-// baseline up, y >= 0 half-breadth. The design draught comes from the config.
+// Offsets CSV (docs/file-formats.md): header x_m,y_m,z_m (further columns ignored), one row per point, the
+// points of one station consecutive from the keel (y = 0) up to the deck edge; x from the AP forward, z from
+// the baseline up, y >= 0 half-breadth. The design draught comes from the config.
 #include <string>
 
 #include "parametric_hull/hull_form.h"

@@ -1,5 +1,5 @@
 #pragma once
-// rao.csv (ARCHITECTURE §4): columns exactly
+// rao.csv (docs/file-formats.md): columns exactly
 //   omega_e_rad_s,omega_rad_s,lambda_over_L,heave_amp,heave_phase_deg,pitch_amp,pitch_phase_deg
 // after '#' comment lines stating the conventions. heave_amp = |X3|/A [m/m], pitch_amp = |X5|/(kA) [rad/rad],
 // k = ω²/g; phases in degrees in (−180, 180], lead positive, relative to the wave crest at the CG.

@@ -1,5 +1,5 @@
 #pragma once
-// Reading a rao.csv (the `hullopt rao` output, ARCHITECTURE §4) back into a RaoTable:
+// Reading a rao.csv (the `hullopt rao` output, docs/file-formats.md) back into a RaoTable:
 //   omega_e_rad_s,omega_rad_s,lambda_over_L,heave_amp,heave_phase_deg,pitch_amp,pitch_phase_deg
 // Columns are found by name (any order, extra columns ignored, lines starting with '#' skipped); heave_amp is
 // |x3|/A, pitch_amp |x5|/(kA), phases in degrees (lead positive). The speed is recovered from

@@ -1,5 +1,5 @@
 #pragma once
-// YAML → sea states, MSI options and passenger points (ARCHITECTURE §4):
+// YAML → sea states, MSI options and passenger points (docs/config-reference.md):
 //
 //   seas:                                   # non-empty list; each entry one sea ...
 //     - { spectrum: jonswap, Hs_m: 3.0, Tz_s: 7.5, gamma: 3.3 }   # Tz_s or Tp_s; gamma default 3.3

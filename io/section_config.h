@@ -1,5 +1,5 @@
 #pragma once
-// The `hullopt section` config (ARCHITECTURE §4 `section:` block plus `water:`), read strictly into plain
+// The `hullopt section` config (the `section:` block plus `water:`), read strictly into plain
 // values. Keys (docs/sections.md):
 //
 //   section:

@@ -1,12 +1,13 @@
 #pragma once
 // Hydrostatics of any HullForm (generated or read) at its design draught, upright and at rest.
 //
-// Conventions (ARCHITECTURE §3): L is the waterline length of the main body (HullForm::length_m if set, else
-// the span of its wetted stations); B the largest breadth of the main body below the waterline; T the design
-// draught above the baseline. Volumes, areas and moments are totals over ALL bodies (mirror pairs counted
-// twice). Form coefficients refer to one reference hull: they divide the totals by the number of reference
-// hulls N (bodies that are not "outrigger", mirror pairs counted twice: 1 monohull and trihull, 2 catamaran
-// and SWATH), so a catamaran's coefficients are those of one demihull and a trihull's include its outriggers:
+// Conventions (docs/conventions.md): L is the waterline length of the main body (HullForm::length_m if set,
+// else the span of its wetted stations); B the largest breadth of the main body below the waterline; T the
+// design draught above the baseline. Volumes, areas and moments are totals over ALL bodies (mirror pairs
+// counted twice). Form coefficients refer to one reference hull: they divide the totals by the number of
+// reference hulls N (bodies that are not "outrigger", mirror pairs counted twice: 1 monohull and trihull, 2
+// catamaran and SWATH), so a catamaran's coefficients are those of one demihull and a trihull's include its
+// outriggers:
 //   Cb = ∇/(N L B T), Cm = A_M/(N B T), Cp = ∇/(L A_M), Cwp = A_wp/(N L B), Cvp = ∇/(A_wp T),
 // with A_M the total section area at midships (x = x_AP + L/2, x_AP the first wetted station of the main
 // body). LCB, LCF in % of L from midships, positive forward.

@@ -1,7 +1,7 @@
 #pragma once
-// Passenger positions along the centreline, x [m] forward of the CG (ARCHITECTURE §3; Davis & Holloway 2003):
-// "lcg" at the CG, "transom" at the transom, "forward" 60 % of the LCG-to-transom distance forward of the
-// LCG. The design's average MSI is the mean over these three. Users may add named points anywhere on the
+// Passenger positions along the centreline, x [m] forward of the CG (docs/conventions.md; Davis & Holloway
+// 2003): "lcg" at the CG, "transom" at the transom, "forward" 60 % of the LCG-to-transom distance forward of
+// the LCG. The design's average MSI is the mean over these three. Users may add named points anywhere on the
 // hull.
 #include <string>
 #include <vector>

@@ -9,7 +9,7 @@
 //   ∫_panel ∫ ∂G~/∂n_p dτ ds = Re[(n_z + i n_y) i e^{−iα} (ΔH⁽⁻¹⁾(q2) − ΔH⁽⁻¹⁾(q1))].
 // Potential: exact in space as well, through K with dK/dζc = H⁽⁻¹⁾ (transient_green.h):
 //   ∫_panel H⁽⁻¹⁾ ds = i e^{−iα} (K(q2) − K(q1)).
-// (Session 1 integrated it by adaptive quadrature; that route is kept as the independent check.)
+// (Adaptive quadrature of the same integral is kept as the independent check.)
 #include <complex>
 
 #include "seakeeping/green/panel.h"

@@ -1,7 +1,7 @@
 #pragma once
 // The rigid ship in head seas on top of one strip kernel: everything the two solution paths (periodic steady
 // state and time marching) share. Heave and pitch only, origin at the CG, x forward, heave x3 up, pitch x5
-// bow-down (ARCHITECTURE §3). The section held at step n of a strip lies at x_n = x_m[n] − LCG.
+// bow-down (docs/conventions.md). The section held at step n of a strip lies at x_n = x_m[n] − LCG.
 //
 // Per unit length at x_n the hull feels (theory notes §4.2, paper §2):
 //   f_n = f_n^kernel                      disturbance potential (radiation + diffraction), from the strip

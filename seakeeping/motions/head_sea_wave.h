@@ -1,5 +1,5 @@
 #pragma once
-// Deep-water regular and irregular head waves seen from a ship moving at speed U (ARCHITECTURE §3).
+// Deep-water regular and irregular head waves seen from a ship moving at speed U (docs/conventions.md).
 //
 // Earth frame: the ship advances in +X at speed U; the CG is at X = U t; head waves travel in −X. In ship
 // axes (x forward of the CG) a component of amplitude A, wave frequency ω and phase ε has the elevation

@@ -1,5 +1,5 @@
 #pragma once
-// Path 2b (ARCHITECTURE §5): heave and pitch RAOs as the periodic steady state over one strip kernel.
+// Path 2b (docs/ship-motions.md): heave and pitch RAOs as the periodic steady state over one strip kernel.
 //
 // At steady state every strip is the same strip shifted by whole time steps, so the force on the section held
 // at step n is f̃_n = Σ_{m ≤ n} e^{−iω_e (n−m)Δt} force[n][m] · Ṽ_m, with Ṽ_m the complex amplitude of the

@@ -1,5 +1,5 @@
 #pragma once
-// The frequency-independent response of one water strip as the hull passes through it (ARCHITECTURE §5).
+// The frequency-independent response of one water strip as the hull passes through it (docs/ship-motions.md).
 //
 // A strip of water fixed in space is entered by the bow at step 0; at step n (n = 0 .. N−1) it holds the hull
 // section at x_m[n] (from the AP), one time step dt = dx/U after the previous one, and it is discarded after the

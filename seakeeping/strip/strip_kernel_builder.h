@@ -1,6 +1,6 @@
 #pragma once
-// Reduction of a strip's operators to the linear map of seakeeping/strip_kernel.h (ARCHITECTURE §5, part
-// (c)):
+// Reduction of a strip's operators to the linear map of seakeeping/strip_kernel.h (docs/ship-motions.md;
+// the last stage, after strip_operators.h and strip_marcher.h):
 //   f_n = Σ_{m<=n} force[n][m] V_m.
 // The P_n × P_m source responses S_{n,m} = ∂σ_n/∂V_m follow from the marching equations,
 //   S_{m,m} = System(m)⁻¹,   S_{n,m} = System(n)⁻¹ Σ_{k=m}^{n−1} Memory(n, k) S_{k,m},

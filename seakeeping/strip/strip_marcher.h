@@ -1,7 +1,7 @@
 #pragma once
-// Time marching of one water strip (ARCHITECTURE §5, part (b)): given the prescribed normal velocity at the
-// collocation points step by step, the source strengths, the strip's vertical momentum and the sectional
-// force.
+// Time marching of one water strip (docs/ship-motions.md; the stage between strip_operators.h and
+// strip_kernel_builder.h): given the prescribed normal velocity at the collocation points step by step, the
+// source strengths, the strip's vertical momentum and the sectional force.
 //
 // Force. The vertical hydrodynamic force per unit length on the section is taken as the rate of change of the
 // vertical momentum of the strip's disturbance flow,

@@ -1,5 +1,6 @@
 #pragma once
-// Frequency-independent operators of one 2D water strip in the time domain (ARCHITECTURE §5, part (a)).
+// Frequency-independent operators of one 2D water strip in the time domain (docs/ship-motions.md;
+// the first stage, used by strip_marcher.h).
 //
 // Model (theory notes §1.2, §1.6). At step n (t_n = n·dt) the strip holds the panels P_n (all bodies sharing
 // the strip: catamaran demihulls, SWATH struts, outriggers). Panel j of step k carries a source density

@@ -1,6 +1,6 @@
 #pragma once
 // Heave added mass and damping per unit length of a fixed 2D section (or several sections sharing a strip,
-// heaving in phase) from the time-domain solver (issue 3, item 3; ARCHITECTURE §4 `hullopt section`).
+// heaving in phase) from the time-domain solver (`hullopt section`, docs/sections.md).
 //
 // Method: the exact periodic steady state of the time-marching scheme. For a section that does not change,
 // the operators depend on the lag only, so with V_n = n_z e^{iωt_n} the sources are σ_n = σ̂ e^{iωt_n},

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
-# End-to-end checks of `hullopt calibrate` (issue 7): the demo config runs and writes the contract files; the
-# three fit modes run; bad data and bad configs exit 1 with a one-line error naming file, line/key and rule.
+# End-to-end checks of `hullopt calibrate` (docs/calibration.md): the demo config runs and writes the contract
+# files; the three fit modes run; bad data and bad configs exit 1 with a one-line error naming file, line/key
+# and rule.
 # Usage: bash tests/cli/calibrate.sh /path/to/hullopt   (from the repo root)
 set -u
 HULLOPT=${1:?usage: calibrate.sh /path/to/hullopt}

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Issue 6 item 2 with the real objective: the default campaign (configs/optimize-catamaran.yaml: parametric
+# Reproducibility with the real objective: the default campaign (configs/optimize-catamaran.yaml: parametric
 # catamaran → time-domain strip RAOs → MSI), cut to 2 multistart runs of 10 evaluations, logs an identical
 # history.csv (every column but wall_time_s, 17 significant digits) with 1 and 2 OpenMP threads and under
 # `mpirun -n 2` (the multistart runs spread over the ranks) when an MPI build of hullopt is given as $2; and a
@@ -30,7 +30,7 @@ sed -e 's/samples: [0-9]*/samples: 6/' configs/optimize-catamaran.yaml > "$work/
 diff <(strip "$work/x1/samples.csv") <(strip "$work/x2/samples.csv") > /dev/null || fail "explore: 1 and 2 threads differ"
 echo "ok: samples.csv of the MSI campaign identical with 1 and 2 threads"
 
-# Kill/resume on the real objective (issue 6 item 3; the analytic-objective version with more kill points is
+# Kill/resume on the real objective (the analytic-objective version with more kill points is
 # optimize_kill_resume.sh): SIGKILL at a random moment, restart with the same command, same history as t1.
 "$HULLOPT" optimize "$work/campaign.yaml" --out "$work/k" --threads 1 --quiet &
 pid=$!

@@ -1,7 +1,7 @@
 #pragma once
 // Free heave decay of a floating 2D section released from rest at an offset, predicted from frequency-domain
-// added mass and damping (issue 3, "what it must show" 4: the reference the time-domain release is compared
-// with). Linear theory, body held at x0 for t < 0 (fluid at rest) and released at t = 0:
+// added mass and damping: the reference the time-domain release is compared with (docs/theory.md, free
+// decay). Linear theory, body held at x0 for t < 0 (fluid at rest) and released at t = 0:
 //   x(t)/x0 = 1 − s(t),   s(t) = (2C/π) ∫_0^∞ Re H(ω) sin(ωt)/ω dω,
 //   H(ω) = 1/(C − ω² (m + a33(ω)) + iω b33(ω))      (h(t) causal, so h = (2/π)∫ Re H cos ωt dω).
 #include <vector>

@@ -1,5 +1,5 @@
 #pragma once
-// Free decay of a 2D section released from rest (issue 3 item 4), shared by the release tests: d/dt(m v + I) =
+// Free decay of a 2D section released from rest, shared by the release tests: d/dt(m v + I) =
 // −C x with the strip's momentum I (all hydrodynamic force on the left, as in the reference paper), BDF2 in time
 // and implicit in v (the force is affine in the current velocity).
 #include <Eigen/Dense>

@@ -1,5 +1,5 @@
-// Tank RAO CSV contract (ARCHITECTURE §4): the Delft 372 file reads as printed; bad files are refused with
-// the file, line, column and rule (issue 7 item 4).
+// Tank RAO CSV contract (docs/file-formats.md): the Delft 372 file reads as printed; bad files are refused
+// with the file, line, column and rule.
 #include <catch2/catch.hpp>
 #include <filesystem>
 #include <fstream>

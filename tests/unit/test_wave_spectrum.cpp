@@ -28,7 +28,7 @@ double LogTrapezoidMoment(const WaveSpectrum& s, int n) {
 }  // namespace
 
 TEST_CASE("4 sqrt(m0) equals Hs within 0.5 % for JONSWAP and Bretschneider", "[spectrum]") {
-  constexpr double kHsTolerance = 0.005;  // issue 5 acceptance: 0.5 %
+  constexpr double kHsTolerance = 0.005;  // acceptance criterion: 0.5 %
   for (const SeaState& sea :
        {SeaState::JonswapTz(0.5, 5.0), SeaState::JonswapTz(3.0, 7.5), SeaState::JonswapTp(2.0, 9.0, 1.5),
         SeaState::JonswapTz(1.0, 5.5, 7.0), SeaState::BretschneiderTz(4.0, 9.0)}) {

@@ -10,7 +10,7 @@
 using namespace hullopt;
 
 namespace {
-// Issue 2 acceptance. The offsets passed through an OCR copy and stop at x = 2.85 m (the stem, about 0.1 %
+// Acceptance. The offsets passed through an OCR copy and stop at x = 2.85 m (the stem, about 0.1 %
 // of the volume, is not part of the offsets), so 2 % on volume and waterplane, 1 % L on the LCB.
 constexpr double kDisplacementRelTol = 0.02, kStiffnessRelTol = 0.02, kLcbTolFractionL = 0.01;
 constexpr double kRhoFresh = 1000.0, kG = 9.81, kDraught = 0.15, kLpp = 3.0, kSpacing = 0.70;

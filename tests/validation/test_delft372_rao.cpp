@@ -1,4 +1,4 @@
-// Delft 372 catamaran at Fn 0.75 (issue 4, item 4): computed heave and pitch RAOs (both demihulls in the
+// Delft 372 catamaran at Fn 0.75: computed heave and pitch RAOs (both demihulls in the
 // strips, transient Green-function kernel, Cs = 0.024 as in the paper) against the tank data of van 't Veer
 // (1998). Acceptance: the peak heave RAO within 15% of the measured peak, at a λ/L within 10% of the measured
 // one. Computed with the default strip layout (steps at the cell faces, exact transom momentum). Writes the
@@ -102,7 +102,7 @@ TEST_CASE("Delft 372 Fn 0.75: peak heave against the tank", "[validation][delft3
             << " tank points, heave / pitch: momentum form " << mean_error(rao_paper, false) << " / "
             << mean_error(rao_paper, true) << ", pressure form " << mean_error(rao_pressure, false) << " / "
             << mean_error(rao_pressure, true) << "\n";
-  constexpr double kPeakTol = 0.15, kLambdaTol = 0.10;  // issue 4, item 4
+  constexpr double kPeakTol = 0.15, kLambdaTol = 0.10;  // the acceptance above
   CHECK(std::fabs(computed.x - measured.x) < kLambdaTol * measured.x);
   CHECK(std::fabs(computed.value - measured.value) < kPeakTol * measured.value);
   // Away from the peak the curve must follow the data: at λ/L = 1.0 (short waves) the computed heave is

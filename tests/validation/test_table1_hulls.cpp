@@ -15,7 +15,7 @@
 using namespace hullopt;
 
 namespace {
-// Issue 2 acceptance: L within 2 % (the table's lengths are rounded and its coefficients given to 2 digits,
+// Acceptance: L within 2 % (the table's lengths are rounded and its coefficients given to 2 digits,
 // so L from Cb, L/B, B/T differs by about 1 %); Fr within 0.01 (table precision); coefficients within 0.01
 // and LCB, LCF within 0.5 % L.
 constexpr double kLengthRelTol = 0.02, kFroudeTol = 0.01, kCoefficientTol = 0.01, kCentroidTolPctL = 0.5;

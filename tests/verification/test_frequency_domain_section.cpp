@@ -146,7 +146,7 @@ TEST_CASE("heaving semicircle: panel solver converges to Ursell's multipole solu
 
 TEST_CASE("semicircle high-frequency added mass tends to rho pi R^2 / 2", "[fd][semicircle]") {
   // At νR = 200 the finite-frequency correction is O(1/(νR)) ≈ 0.5%; with 112 panels the O(1/N) panel error
-  // is ≈ 0.6% (Rankine check), so 1% is the brief's tolerance and is met without extrapolation at 112 panels.
+  // is ≈ 0.6% (Rankine check), so the required 1% is met without extrapolation at 112 panels.
   constexpr double kTolHighFrequency = 0.01;
   const Coefficients p = Panels(112, 200.0);
   std::printf("semicircle nuR = 200, 112 panels: a33/(rho pi R^2/2) = %.4f\n", p.a);

@@ -1,4 +1,4 @@
-// The parametric generator meets its targets in its own hydrostatics (issue 2 item 3), for every hull type
+// The parametric generator meets its targets in its own hydrostatics, for every hull type
 // and section style; and refuses combinations that cannot be met, naming variables and rule.
 #include <catch2/catch.hpp>
 #include <cmath>
@@ -11,7 +11,7 @@
 using namespace hullopt::hull;
 
 namespace {
-// Issue 2 targets: coefficients within 0.005, LCB/LCF within 0.2 % L, displacement to 1e-6 relative.
+// Generator targets: coefficients within 0.005, LCB/LCF within 0.2 % L, displacement to 1e-6 relative.
 constexpr double kCoefficientTol = 0.005, kCentroidTolPctL = 0.2, kDisplacementRelTol = 1e-6;
 
 void CheckTargets(const DesignVariables& dv) {

@@ -1,4 +1,4 @@
-// Issue 5, acceptance item 2: an irregular-sea time series from the time-marching path (2a) gives rms
+// Acceptance: an irregular-sea time series from the time-marching path (2a) gives rms
 // vertical accelerations within 5 % of the spectral ones (SeaResponse on the periodic-path RAOs, 2b) at the
 // forward, LCG and transom positions. One Delft 372 demihull (model scale, Fn 0.75, 20 sections × 8 panels,
 // transient Green-function kernel) in a model-scale JONSWAP sea whose peak encounter frequency lies at the
@@ -123,7 +123,7 @@ TEST_CASE("marched irregular sea: rms accelerations match the spectral ones at t
   for (const auto& c : sk::IrregularSeaComponents(spectrum, U, kG, so))
     sea.push_back({c.amplitude_m, c.omega_rad_s, c.phase_rad});
 
-  constexpr double kRecord = 1800.0;  // [s] model time analysed: the issue's 30 simulated minutes
+  constexpr double kRecord = 1800.0;  // [s] model time analysed: 30 simulated minutes
   constexpr double kRamp = 10.0;      // [s] half-cosine ramp-in of the sea
   constexpr double kDiscard = 30.0;   // [s] ramp plus ~10 heave-decay times discarded
   sk::KernelStripForceModel forces(kernel);
@@ -138,9 +138,9 @@ TEST_CASE("marched irregular sea: rms accelerations match the spectral ones at t
             << " Tz " << tz << " s (omega_p " << wp << " rad/s, peak omega_e "
             << sk::HeadSeaEncounterFrequency(wp, U, kG) << " rad/s); " << sea.size() << " components; "
             << kRecord << " s analysed after " << kDiscard << " s; march " << march_s << " s wall\n";
-  // Tolerance: the issue's 5 %. Expected scatter: the rms of a record of N response cycles has a relative
-  // standard error ≈ 1/√(2N) for a broad-band process, more for the narrow-band resonant response (N_eff
-  // smaller): 1800 s at ω_e ≈ 5.5 rad/s is ~1600 cycles, 1.8 % nominal, a few % with the resonance's
+  // Tolerance: the acceptance criterion's 5 %. Expected scatter: the rms of a record of N response cycles has
+  // a relative standard error ≈ 1/√(2N) for a broad-band process, more for the narrow-band resonant response
+  // (N_eff smaller): 1800 s at ω_e ≈ 5.5 rad/s is ~1600 cycles, 1.8 % nominal, a few % with the resonance's
   // bandwidth (the realisation is fixed by the seed, so the figure is reproducible). The component sum (300
   // bins, frequency jittered in each bin) adds < 1 %. The marcher's trapezoid kinematics warp the frequency
   // by (ω_e Δt)²/12 ≈ 0.6 % at the resonance (ω_e Δt = 0.27), which moves the rms by ~1 % against the

@@ -37,7 +37,7 @@ RaoTable CatamaranLikeTable() {  // heave peak 2 at ω_e 1.7 rad/s, pitch peak ~
 TEST_CASE("30 simulated minutes reproduce the spectral rms and mean |a| at the three positions",
           "[time-domain]") {
   // Statistical sampling error of a 30-minute record (a few hundred response cycles): ~2–3 % on the rms.
-  constexpr double kRmsTolerance = 0.05;      // issue 5 acceptance
+  constexpr double kRmsTolerance = 0.05;      // acceptance criterion
   constexpr double kMeanAbsTolerance = 0.05;  // Gaussian mean |a| = 0.798 σ within the same record error
   constexpr double kDuration = 1800.0;        // [s]
   constexpr double kDt = 0.04;                // [s] 10 samples per period at the highest ω_e (15.6 rad/s)

@@ -89,7 +89,7 @@ TEST_CASE("amplitude function from the stations matches Wigley's analytic form",
 }
 
 TEST_CASE("Wigley wave resistance: code against an independent quadrature, and two resolutions", "[michell]") {
-  // The must-show criterion: a second quadrature/resolution of the same integral agrees to 1 %.
+  // Acceptance: a second quadrature/resolution of the same integral agrees to 1 %.
   constexpr double kQuadratureTol = 0.01;
   const hull::HullForm fine = test::WigleyHull(L, B, T, 81, 81);
   const hull::HullForm coarse = test::WigleyHull(L, B, T, 41, 41);

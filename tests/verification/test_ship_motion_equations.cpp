@@ -146,7 +146,7 @@ TEST_CASE("time marching agrees with the periodic steady state", "[motions][marc
       peak3 = std::max(peak3, std::abs(periodic.heave[i]));
       peak5 = std::max(peak5, std::abs(periodic.pitch[i]));
     }
-    // Issue 4 acceptance: magnitudes within 1% of the peak, phases within 3 degrees. The marching differs by
+    // Path agreement: magnitudes within 1% of the peak, phases within 3 degrees. The marching differs by
     // its trapezoid/extrapolation error O((ω_e Δt)²) ≈ 0.3% at ω_e Δt = 0.22.
     constexpr double kAmpTol = 0.01, kPhaseTolDeg = 3.0;
     for (std::size_t i = 0; i < w.size(); ++i) {

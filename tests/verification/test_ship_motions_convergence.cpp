@@ -1,4 +1,4 @@
-// Convergence of the heave peak with sections × panels (issue 4, item 3): 20 × 8 (panel counts are even, so
+// Convergence of the heave peak with sections × panels: 20 × 8 (panel counts are even, so
 // not 20 × 7), 40 × 14 and 80 × 28, with the paper's transient Green-function kernel and the periodic path,
 // strip steps at the cell faces (StationLayout::kCellFaces, strip_kernel.h; opt-in). The change from 40 × 14
 // to 80 × 28 must be under 3% (the acceptance) for
@@ -28,7 +28,7 @@ namespace hull = hullopt::hull;
 namespace {
 
 constexpr double kG = 9.81;
-// Issue 4, item 3: the change at the heave peak from 40 × 14 to 80 × 28 under 3%.
+// Acceptance: the change at the heave peak from 40 × 14 to 80 × 28 under 3%.
 constexpr double kConvergenceTol = 0.03;
 
 struct Case {

@@ -1,5 +1,5 @@
 // Ship motions on a real hull (Delft 372 catamaran, both demihulls in the strips, Fn 0.75, Cs 0.024): the two
-// solution paths agree (issue 4, item 1) and the static limit holds (item 2).
+// solution paths agree and the static (long-wave) limit holds.
 //
 // Kernel: the impulsive (φ = 0) strip kernel until the transient-Green-function kernel is wired in; the
 // checks here concern the ship equations and the two paths over the same strips, which hold for any kernel.
@@ -47,7 +47,7 @@ TEST_CASE("Delft 372: time marching agrees with the periodic steady state", "[mo
   const auto w = sk::WaveFrequencies(
       sk::FrequencySpec::Range(sk::FrequencySpec::Quantity::kOmegaE, 0.3 * peak_we, 3.0 * peak_we, 13),
       kSpeed, kG, 3.0);
-  // Against the exact steady state of the marching scheme (trapezoid kinematics, ARCHITECTURE §5), as in
+  // Against the exact steady state of the marching scheme (trapezoid kinematics, docs/ship-motions.md), as in
   // test_ship_motions_transient_kernel.cpp: the continuous-time kinematics differ from marching by the
   // trapezoid frequency warp (ω_e Δt)²/12, which on this stand-in kernel's sharp resonance reaches 1.4% of
   // the pitch peak with cell-face stations and is not a disagreement between the paths.
@@ -59,7 +59,7 @@ TEST_CASE("Delft 372: time marching agrees with the periodic steady state", "[mo
     peak3 = std::max(peak3, std::abs(periodic.heave[i]));
     peak5 = std::max(peak5, std::abs(periodic.pitch[i]));
   }
-  // Issue 4 acceptance: magnitudes within 1% of the curve's peak, phases within 3° (where the response is
+  // Path agreement: magnitudes within 1% of the curve's peak, phases within 3° (where the response is
   // more than 1% of its peak: below that the phase of a vanishing response is not meaningful).
   constexpr double kAmpTol = 0.01, kPhaseTolDeg = 3.0;
   for (std::size_t i = 0; i < w.size(); ++i) {
@@ -80,7 +80,7 @@ TEST_CASE("Delft 372: heave and pitch RAOs tend to 1 in long waves", "[motions][
   mo.damping_cs = 0.024;
   const sk::HeadSeaShipModel model(kernel, hullopt::testing::Delft372Mass(), mo);
   const auto r = sk::SolvePeriodicRaos(model, {0.05});  // λ = 24.7 km, λ/L ≈ 8000
-  constexpr double kLimitTol = 0.02;                    // issue 4, item 2
+  constexpr double kLimitTol = 0.02;                    // long-wave limit: 2%
   CHECK(std::abs(std::abs(r.heave[0]) - 1.0) < kLimitTol);
   CHECK(std::abs(std::abs(r.pitch[0]) - 1.0) < kLimitTol);
 }

@@ -1,7 +1,7 @@
 // Ship motions with the paper's strip kernel (transient free-surface Green function): the periodic steady
 // state (2b), time marching over the kernel convolution (2a) and time marching over the strip solver itself
-// (StripMarcher) agree (issue 4, item 1) for Delft 372 at Fn 0.75 and an NPL 5b-like catamaran at Fr 0.8; the
-// long-wave limits hold (item 2). 20 sections × 8 panels keep the kernels to a few seconds; the agreement of
+// (StripMarcher) agree for Delft 372 at Fn 0.75 and an NPL 5b-like catamaran at Fr 0.8; the long-wave limits
+// hold. 20 sections × 8 panels keep the kernels to a few seconds; the agreement of
 // the paths does not depend on the resolution.
 #include <catch2/catch.hpp>
 #include <cmath>
@@ -67,7 +67,7 @@ void CompareAgainstPeriodic(const sk::RaoTable& periodic, const sk::RaoTable& ot
     peak3 = std::max(peak3, std::abs(periodic.heave[i]));
     peak5 = std::max(peak5, std::abs(periodic.pitch[i]));
   }
-  // Issue 4 acceptance: magnitudes within 1% of the curve's peak, phases within 3° (phases compared where the
+  // Path agreement: magnitudes within 1% of the curve's peak, phases within 3° (phases compared where the
   // response exceeds 1% of its peak).
   const double kAmpTol = amp_tol, kPhaseTolDeg = phase_tol_deg;
   for (std::size_t i = 0; i < periodic.heave.size(); ++i) {
@@ -111,11 +111,11 @@ void CheckPaths(const Case& c, sk::StationLayout layout = sk::kDefaultStationLay
   const auto w = sk::WaveFrequencies(
       sk::FrequencySpec::Range(sk::FrequencySpec::Quantity::kOmegaE, 0.3 * peak_we, 3.0 * peak_we, 10),
       c.speed, c.g, L);
-  // 2b as the exact steady state of the marching scheme (ARCHITECTURE §5): trapezoid kinematics. Issue 4
-  // acceptance: 1% of the peak, 3°. The marched fits settle to 1e-4 (steady_tolerance), so the paths in fact
-  // agree far closer; the continuous-time 2b (exact kinematics) differs from both by the trapezoid frequency
-  // warp (ω_e Δt)²/12, about 1% in frequency at ω_e Δt = 0.34 here, i.e. up to 2% of the peak on the flanks
-  // at 20 sections (a quarter of that at the paper's 40).
+  // 2b as the exact steady state of the marching scheme (docs/ship-motions.md): trapezoid kinematics.
+  // Path agreement: 1% of the peak, 3°. The marched fits settle to 1e-4 (steady_tolerance), so the paths in
+  // fact agree far closer; the continuous-time 2b (exact kinematics) differs from both by the trapezoid
+  // frequency warp (ω_e Δt)²/12, about 1% in frequency at ω_e Δt = 0.34 here, i.e. up to 2% of the peak on
+  // the flanks at 20 sections (a quarter of that at the paper's 40).
   const auto periodic = sk::SolvePeriodicRaos(model, w, sk::PeriodicKinematics::kTrapezoid);
   sk::KernelStripForceModel convolution(kernel);
   const auto by_kernel = sk::SolveMarchingRaos(model, convolution, w, sk::MarchingOptions{});
@@ -125,7 +125,7 @@ void CheckPaths(const Case& c, sk::StationLayout layout = sk::kDefaultStationLay
   CompareAgainstPeriodic(periodic, by_marcher, c.name + " strip marching");
   // The kernel reduction against the strip solver it was reduced from: the same motions to the fit tolerance.
   CompareAgainstPeriodic(by_kernel, by_marcher, c.name + " kernel vs marcher", 1e-3, 0.1);
-  // Long waves (issue 4, item 2): λ/L of several thousand.
+  // Long waves: λ/L of several thousand, |X3/A| and |X5/(kA)| → 1 within 2%.
   const auto r0 = sk::SolvePeriodicRaos(model, {0.02 * std::sqrt(c.g / L)});
   constexpr double kLimitTol = 0.02;
   CHECK(std::abs(std::abs(r0.heave[0]) - 1.0) < kLimitTol);

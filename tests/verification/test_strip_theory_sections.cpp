@@ -43,7 +43,7 @@ TEST_CASE("strip theory on Delft 372: long-wave limits", "[stf][delft372]") {
   mo.damping_cs = 0.0;
   const sk::HeadSeaShipModel model(g, hullopt::testing::Delft372Mass(), mo);
   const auto r = sk::SolveStripTheoryRaos(model, {0.05}, sk::FrequencyDomainSectionRows(g, geo.panels));
-  constexpr double kLimitTol = 0.02;  // issue 4, item 2
+  constexpr double kLimitTol = 0.02;  // long-wave limit: 2%
   CHECK(std::abs(std::abs(r.heave[0]) - 1.0) < kLimitTol);
   CHECK(std::abs(std::abs(r.pitch[0]) - 1.0) < kLimitTol);
 }

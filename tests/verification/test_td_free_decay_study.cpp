@@ -1,4 +1,4 @@
-// Study behind the free-decay tests of test_td_strip_solver.cpp (issue 3 item 4): why the second-cycle log
+// Study behind the free-decay tests of test_td_strip_solver.cpp: why the second-cycle log
 // decrement of the 14-panel time-domain release differs from the prediction from the time-domain
 // coefficients, and how the frequency-domain (lid on / off) predictions converge with the panels. Hidden
 // (minutes of CPU); output on stdout:

@@ -1,8 +1,10 @@
-// Time-domain heave added mass and damping tables for the lead's comparison with the frequency-domain solver
-// (issue 3, "what it must show" 2, 3, 5). Hidden from the default run (minutes of CPU): reproduce with
+// Time-domain heave added mass and damping tables for comparison with the frequency-domain solver (energy
+// balance, local and peak agreement, convergence with the panels). Hidden from the default run (minutes of
+// CPU): reproduce with
 //   ./build/tests/verification_td_section_table "[table]"          (sections, 14 panels per body)
 //   ./build/tests/verification_td_section_table "[convergence]"    (semicircle, 14/28/56 panels)
-// Output (stdout) is CSV with the section.csv columns (ARCHITECTURE §4) plus the case and normalised values.
+// Output (stdout) is CSV with the section.csv columns (docs/file-formats.md) plus the case and normalised
+// values.
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <iostream>
@@ -19,7 +21,7 @@ using namespace hullopt::sk;
 namespace {
 constexpr double kG = 9.81;
 constexpr double kRho = 1025.0;
-// ω²(B/2)/g from 0.1 to 3 (issue 3).
+// ω²(B/2)/g from 0.1 to 3, the range of the comparison with the frequency-domain solver.
 const std::vector<double> kNondimensional = {0.1, 0.25, 0.5, 0.75, 1.0, 1.25, 1.5, 1.75, 2.0, 2.5, 3.0};
 
 std::string Table(const std::string& name, const std::vector<Panel>& panels, double half_beam, double area) {
@@ -41,7 +43,7 @@ std::string Table(const std::string& name, const std::vector<Panel>& panels, dou
 }
 }  // namespace
 
-TEST_CASE("time-domain heave coefficients of the issue-3 sections", "[.][table]") {
+TEST_CASE("time-domain heave coefficients of the reference sections", "[.][table]") {
   const double R = 1.0;
   std::cout << Table("semicircle_R1", PanelSymmetricSection(SemicircleContour(R), 14), R, M_PI * R * R / 2)
             << std::flush;

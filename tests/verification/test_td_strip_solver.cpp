@@ -1,7 +1,8 @@
-// Time-domain strip solver (issue 3, items 3 and "what it must show" 2, 4, 5): impulsive added mass of a
-// semicircle against ρπR²/2, strip kernel (c) against the marching solver (b) for changing sections and
-// several bodies, time-invariant against general operators, thread-count independence, forced oscillation run
-// to a steady state against the steady-state transform, and the free decay of a released floating cylinder.
+// Time-domain strip solver: impulsive added mass of a semicircle against ρπR²/2, the strip kernel
+// (strip_kernel_builder.h) against the marching solver (strip_marcher.h) for changing sections and several
+// bodies, time-invariant against general operators, thread-count independence, forced oscillation run to a
+// steady state against the steady-state transform, the free decay of a released floating cylinder, and the
+// energy balance of the heave damping.
 #include <algorithm>
 #include <catch2/catch.hpp>
 
@@ -65,9 +66,9 @@ TEST_CASE("impulsive added mass of a semicircle converges to rho pi R^2 / 2", "[
   // half-immersed circular cylinder): the t = 0+ response of the time-domain solver is the φ = 0 free-surface
   // problem. Flat constant-strength panels with the curvature term of their self influence (rankine_panel.h)
   // converge at second order (measured −1.1%, −0.27%, −0.06%, −0.02% at 14–112 panels; without the term
-  // first order, +6.3% at 14), so the issue's 1% holds from 28 panels, and Richardson extrapolation
+  // first order, +6.3% at 14), so the required 1% holds from 28 panels, and Richardson extrapolation
   // (4a(2N) − a(N))/3 removes the O(1/N²) term.
-  constexpr double kTolHighFrequency = 0.01;  // issue 3: within 1% of ρπR²/2
+  constexpr double kTolHighFrequency = 0.01;  // required: within 1% of ρπR²/2
   constexpr double kTolExtrapolated = 5e-4;   // O(1/N³) remainder after removing the O(1/N²) term
   const double R = 1.3, m0 = kRho * M_PI * R * R / 2;
   std::vector<double> a;
@@ -218,7 +219,7 @@ TEST_CASE("free decay of a released cylinder: marching against the transform of 
           "[td][verification]") {
   // Self-consistency of the time-domain route: the release history against linear theory (free_decay.h),
   // x/x0 = 1 − (2C/π)∫ Re H sin(ωt)/ω dω, with a33(ω), b33(ω) from the steady-state transform of the SAME
-  // operators at 240 frequencies. (Issue 3 item 4, prediction from the frequency-domain solver: next test.)
+  // operators at 240 frequencies. (The prediction from the frequency-domain solver: next test.)
   // Also the single-frequency damped-oscillator estimate, only approximate for ζ ≈ 0.17 (reported).
   // Second cycle (reported, not checked): 1.062 (march) vs 1.027 (transform). Not the time step (march 1.069,
   // 1.062, 1.061 at dt = 0.04, 0.02, 0.01 s), not the Fourier integral (dω 0.05 → 0.0125 rad/s or range
@@ -227,7 +228,7 @@ TEST_CASE("free decay of a released cylinder: marching against the transform of 
   // after 30 s), while the transform sees it only as a sampled near-pole of a33, b33 (ω²R/g = 1.80–1.88).
   // That ringing is 7% of the second peak (0.106 x0). It is excited by the discretisation: 0.0070, 0.0032,
   // 0.0017 x0 at 14, 28, 56 panels.
-  constexpr double kTolPeriod = 0.03;        // issue 3: period and log decrement within 3%
+  constexpr double kTolPeriod = 0.03;        // required: period and log decrement within 3%
   constexpr double kTolLogDecrement = 0.03;  // first cycle
   constexpr double kTolHistory = 0.03;  // max |Δx|/x0 over the first 3 periods: BDF2 phase error ~(ωdt)³
                                         // plus the 0.007 x0 ringing
@@ -277,7 +278,7 @@ TEST_CASE("free decay of a released cylinder: marching against the transform of 
 
 TEST_CASE("free decay of a released cylinder against the frequency-domain solver's coefficients",
           "[td][fd][verification]") {
-  // Issue 3 item 4: the time-domain release history (marching, no frequency-domain input) against the
+  // The time-domain release history (marching, no frequency-domain input) against the
   // history linear theory predicts from the FREQUENCY-DOMAIN panel solver's a33(ω), b33(ω)
   // (SolveSectionFrequencyDomain with its lid on, so the curve has no irregular frequency), same panels.
   // Infinite-frequency added mass (used beyond the last frequency, 12 rad/s, where |C H| < 0.05, falling as
@@ -286,10 +287,10 @@ TEST_CASE("free decay of a released cylinder against the frequency-domain solver
   // +4.7%, b33 +3.5% against Ursell at ω²R/g = 0.25, lid off +5.4%, +2.2%;
   // tests/verification/test_frequency_domain_section.cpp prints them). The first-cycle log decrement of the
   // lid-on prediction is 1.248, 1.216, 1.202 at 14, 28, 56 panels (Richardson 1.188) against the march's
-  // 1.180, 1.185, 1.188, so the issue's 3% is met from 56 panels on: checked there, 14 and 28 reported. Time
+  // 1.180, 1.185, 1.188, so the required 3% is met from 56 panels on: checked there, 14 and 28 reported. Time
   // step 0.02 s: halving it moves the march's figures by < 0.2%.
-  constexpr double kTolPeriod = 0.03;        // issue 3
-  constexpr double kTolLogDecrement = 0.03;  // issue 3, first and second cycle
+  constexpr double kTolPeriod = 0.03;        // required: within 3%
+  constexpr double kTolLogDecrement = 0.03;  // required: within 3%, first and second cycle
   constexpr int kPanelsChecked = 56;
   const Release body;
   const double dt = 0.02;
@@ -326,15 +327,15 @@ TEST_CASE("free decay of a released cylinder against the frequency-domain solver
 }
 
 TEST_CASE("heave damping equals the radiated wave energy flux", "[td][verification]") {
-  // Energy balance (issue 3, "what it must show" 2): b33 from the force (momentum route) against
+  // Energy balance: b33 from the force (momentum route) against
   // ρg²(|A+|² + |A−|²)/(2ω) from the far-field wave amplitudes of the same steady-state sources. The two use
   // different parts of the solution (near-field potential on the body vs the sources' wave-number transform),
   // so they agree only to the O(1/N) error of flat constant panels (docs/theory.md): the mismatch halves with
-  // each doubling of the panels (measured 3–5% at 14, 1–3% at 28, ≤ 1.5% at 56 panels), so the issue's 2% is
+  // each doubling of the panels (measured 3–5% at 14, 1–3% at 28, ≤ 1.5% at 56 panels), so the required 2% is
   // checked at 56 panels and the 14- and 28-panel ratios are reported. Halving the time step changes the
   // ratios by < 1e−3.
   // Frequencies avoid the irregular band around ω²R/g ≈ 1.8 (docs/theory.md).
-  constexpr double kTolEnergy = 0.02;  // issue 3
+  constexpr double kTolEnergy = 0.02;  // required: within 2%
   constexpr int kPanelsChecked = 56;
   const double R = 1.0;
   const std::vector<double> nondim = {0.25, 0.5, 0.75, 1.0, 2.5};

@@ -1,4 +1,4 @@
-// Two sections in one strip (the catamaran case, issue 4 items 3-4): the time-domain coupling between the
+// Two sections in one strip (the catamaran case): the time-domain coupling between the
 // demihulls, which comes only through the memory part of the transient Green function (the instantaneous
 // Rankine coupling moves the Delft 372 heave peak by 0.3%, the memory coupling by 14%; docs/ship-motions.md),
 // checked against an independent method. Two semicircles at the Delft 372 spacing ratio (centreline spacing
@@ -68,7 +68,7 @@ Case Release(const std::vector<std::vector<Panel>>& bodies, int steps, double dt
 
 TEST_CASE("two sections released together: time-domain coupling against the frequency-domain pair",
           "[td][fd][interaction][verification]") {
-  // Tolerances as for one released cylinder (issue 3 item 4, test_td_strip_solver.cpp): period and
+  // Tolerances as for one released cylinder (test_td_strip_solver.cpp): period and
   // first-cycle log decrement within 3%, history within 0.03 x0, at 56 panels per body, where the
   // frequency-domain curve's own O(1/N) panel error is below 1.5% for one cylinder. The pair's second cycle
   // GROWS (energy comes back from the gap between the bodies: log decrement about −0.2), so a relative

@@ -1,4 +1,4 @@
-// Verification of the transient kernel (issue 3, "what it must show" 1; theory notes §1.3–1.6):
+// Verification of the transient kernel (theory notes §1.3–1.6):
 //  - H, H_t, H' against direct numerical quadrature of the integral definition (1) at 60+ points, including
 //    points within 1e−3 of the free surface and t·sqrt(g/r') up to 200 (long-double quadrature, below);
 //  - the free-surface identity H_tt + gH' = 0 by a 6th-order finite difference in t;
@@ -64,7 +64,7 @@ Quad QuadratureOfDefinition(double Y, double Z, double t) {
   return out;
 }
 
-// Required accuracy of the closed form (issue 3): 1e−8 relative, where the quadrature converges. The
+// Required accuracy of the closed form: 1e−8 relative, where the quadrature converges. The
 // quadrature "converges" for a component when its lobe sum cancels by less than 1e6 (long double keeps >= 12
 // digits then).
 constexpr double kTolRelative = 1e-8;

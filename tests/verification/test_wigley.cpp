@@ -13,7 +13,7 @@ using namespace hullopt::hull;
 
 namespace {
 constexpr double kL = 4.0, kB = 0.4, kT = 0.25;
-// Required by the issue: closed forms to 1e-4 relative. With 101 points per section the polyline's
+// Required: closed forms to 1e-4 relative. With 101 points per section the polyline's
 // trapezoid error in z is h^2/4 = 2.5e-5 relative; Simpson in x is exact for the quadratic area curve and
 // 6e-6 for the quartic I_L integrand with 41 stations.
 constexpr double kClosedFormTol = 1e-4;
