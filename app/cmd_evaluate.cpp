@@ -7,7 +7,9 @@
 //   hull: {...}; speed: {...}; solver: {Cs: ...}; mass: {...}   # one design computed here ...
 //
 //   designs:                                 # ... or several, each a design config file
-//     - { config: configs/davis-holloway-2003/hull04_DUT372.yaml, name: DUT372, group: catamaran, Cs: 0.024 }
+//     - { config: davis-holloway-2003/hull04_DUT372.yaml, name: DUT372, group: catamaran, Cs: 0.024 }
+//
+// Paths are relative to the folder of the config that names them (io/config_path.h).
 //
 //   rao_csv: out/rao/rao.csv                 # one design ...
 //   name: delft372                           # optional, default: the file's parent folder or stem
@@ -80,12 +82,11 @@ void ComputeDesign(io::YamlMap& root, const std::string& file, DesignInput* in, 
   for (const auto& [k, v] : dc.Parameters()) in->design.parameters.emplace(k, v);
 }
 
-DesignInput ReadDesign(io::YamlMap& m, const std::string& config_file, double g, bool single) {
+DesignInput ReadDesign(io::YamlMap& m, double g, bool single) {
   DesignInput in;
   if (!single && m.Has("config")) {
     in.where = m.Where("config");
-    const std::string file = io::ResolveConfigPath(m.String("config"), config_file);
-    m.resolved()["config"] = std::filesystem::absolute(file).lexically_normal().string();
+    const std::string file = io::ConfigFilePath(m, "config");  // its own paths resolve beside it
     in.design.name = m.String("name", std::filesystem::path(file).stem().string());
     in.design.group = m.String("group", "");
     const double cs = m.Has("Cs") ? m.Number("Cs") : -1.0;
@@ -100,9 +101,7 @@ DesignInput ReadDesign(io::YamlMap& m, const std::string& config_file, double g,
     return in;
   }
   in.where = m.Where("rao_csv");
-  const std::string csv = io::ResolveConfigPath(m.String("rao_csv"), config_file);
-  // Record the file actually read, absolute, so config.resolved.yaml re-runs from any folder.
-  m.resolved()["rao_csv"] = std::filesystem::absolute(csv).lexically_normal().string();
+  const std::string csv = io::ConfigFilePath(m, "rao_csv");
   in.design.name = m.String("name", DefaultName(csv));
   if (in.design.name.empty()) m.Fail("name", "must not be empty");
   if (!single) {
@@ -198,10 +197,10 @@ void Run(const std::string& config_file, const std::string& out_dir) {
     in.computed = dc;
     inputs.push_back(in);
   } else if (single) {
-    inputs.push_back(ReadDesign(root, config_file, g, true));
+    inputs.push_back(ReadDesign(root, g, true));
   } else {
     for (io::YamlMap& d : root.ListOfMaps("designs")) {
-      inputs.push_back(ReadDesign(d, config_file, g, false));
+      inputs.push_back(ReadDesign(d, g, false));
       d.Finish();
     }
   }
@@ -228,7 +227,7 @@ void Run(const std::string& config_file, const std::string& out_dir) {
   // Points are checked against each design's hull below (designs differ in length).
   const std::vector<sk::PassengerPosition> points = io::ReadPassengerPoints(positions, nullptr);
   positions.Finish();
-  const io::OperabilityConfig operability = io::ParseOperability(root, config_file, points);
+  const io::OperabilityConfig operability = io::ParseOperability(root, points);
   const io::ResolutionCheckConfig resolution = io::ReadResolutionCheck(root);
   io::YamlMap report_map = root.MapOrEmpty("report");
   io::EvaluationReportOptions report;
