@@ -10,7 +10,7 @@ namespace fs = std::filesystem;
 // Why a resolved path is not there: the resolved path, and for a relative one the folder it was taken from.
 std::string MissingFile(const std::string& given, const std::string& file, const std::string& config_file) {
   if (fs::path(given).is_absolute()) return "no such file";
-  const fs::path folder = fs::absolute(fs::path(config_file).parent_path()).lexically_normal();
+  const fs::path folder = fs::path(ResolveConfigPath(".", config_file)).parent_path();
   return "no such file " + file + " (a relative path is relative to the config's folder, " + folder.string() + ")";
 }
 
