@@ -5,6 +5,7 @@
 // from rao.csv files (the `hullopt rao` output):
 //
 //   hull: {...}; speed: {...}; solver: {Cs: ...}; mass: {...}   # one design computed here ...
+//   name: npl5b                              # optional, default: the config file's stem
 //
 //   designs:                                 # ... or several, each a design config file
 //     - { config: davis-holloway-2003/hull04_DUT372.yaml, name: DUT372, group: catamaran, Cs: 0.024 }
@@ -186,7 +187,9 @@ void Run(const std::string& config_file, const std::string& out_dir) {
   if (computed) {
     DesignInput in;
     in.where = root.Where("hull");
-    in.design.name = std::filesystem::path(config_file).stem().string();
+    // Recorded in config.resolved.yaml, so that a re-run keeps the design's name.
+    in.design.name = root.String("name", std::filesystem::path(config_file).stem().string());
+    if (in.design.name.empty()) root.Fail("name", "must not be empty");
     const eval::DesignCase dc = io::LoadDesignCase(root, config_file, in.design.name);
     const std::vector<double> omega = eval::SeaFrequencies(dc);
     CheckRunCost("evaluate", io::StripWorkFromResolved(root.resolved(), static_cast<long>(omega.size())));
