@@ -38,6 +38,7 @@ run() {
   [ $ok -eq 1 ] || fail=1
   if [ "$TABLE" = "--table" ]; then
     local shown="${msg//$T\//}"
+    shown="${shown//$PWD\//}"  # files of the repository, named from its root
     shown="${shown//|/\\|}"
     printf '| %d | `%s` | %s | %d | %s |\n' "$n" "$1" "$DESC" "$rc" "$shown"
   fi
