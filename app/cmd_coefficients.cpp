@@ -33,11 +33,11 @@ void RunCoefficients(const std::string& config_file, const std::string& out_dir)
   if (root.Has("compare")) {
     auto c = root.Map("compare");
     if (c.Has("forced_heave_csv"))
-      heave = io::ReadForcedOscillationCsv(io::ResolveConfigPath(c.String("forced_heave_csv"), config_file), 3);
+      heave = io::ReadForcedOscillationCsv(io::ConfigFilePath(c, "forced_heave_csv"), 3);
     if (c.Has("forced_pitch_csv"))
-      pitch = io::ReadForcedOscillationCsv(io::ResolveConfigPath(c.String("forced_pitch_csv"), config_file), 5);
+      pitch = io::ReadForcedOscillationCsv(io::ConfigFilePath(c, "forced_pitch_csv"), 5);
     if (c.Has("wave_loads_csv"))
-      loads = io::ReadRestrainedWaveLoadCsv(io::ResolveConfigPath(c.String("wave_loads_csv"), config_file),
+      loads = io::ReadRestrainedWaveLoadCsv(io::ConfigFilePath(c, "wave_loads_csv"),
                                             &skipped);
     trim = c.String("trim_sinkage", trim);
     c.Finish();

@@ -5,9 +5,12 @@
 // from rao.csv files (the `hullopt rao` output):
 //
 //   hull: {...}; speed: {...}; solver: {Cs: ...}; mass: {...}   # one design computed here ...
+//   name: npl5b                              # optional, default: the config file's stem
 //
 //   designs:                                 # ... or several, each a design config file
-//     - { config: configs/davis-holloway-2003/hull04_DUT372.yaml, name: DUT372, group: catamaran, Cs: 0.024 }
+//     - { config: davis-holloway-2003/hull04_DUT372.yaml, name: DUT372, group: catamaran, Cs: 0.024 }
+//
+// Paths are relative to the folder of the config that names them (io/config_path.h).
 //
 //   rao_csv: out/rao/rao.csv                 # one design ...
 //   name: delft372                           # optional, default: the file's parent folder or stem
@@ -81,12 +84,11 @@ void ComputeDesign(io::YamlMap& root, const std::string& file, DesignInput* in, 
   for (const auto& [k, v] : dc.Parameters()) in->design.parameters.emplace(k, v);
 }
 
-DesignInput ReadDesign(io::YamlMap& m, const std::string& config_file, double g, bool single) {
+DesignInput ReadDesign(io::YamlMap& m, double g, bool single) {
   DesignInput in;
   if (!single && m.Has("config")) {
     in.where = m.Where("config");
-    const std::string file = io::ResolveConfigPath(m.String("config"), config_file);
-    m.resolved()["config"] = std::filesystem::absolute(file).lexically_normal().string();
+    const std::string file = io::ConfigFilePath(m, "config");  // its own paths resolve beside it
     in.design.name = m.String("name", std::filesystem::path(file).stem().string());
     in.design.group = m.String("group", "");
     const double cs = m.Has("Cs") ? m.Number("Cs") : -1.0;
@@ -101,9 +103,7 @@ DesignInput ReadDesign(io::YamlMap& m, const std::string& config_file, double g,
     return in;
   }
   in.where = m.Where("rao_csv");
-  const std::string csv = io::ResolveConfigPath(m.String("rao_csv"), config_file);
-  // Record the file actually read, absolute, so config.resolved.yaml re-runs from any folder.
-  m.resolved()["rao_csv"] = std::filesystem::absolute(csv).lexically_normal().string();
+  const std::string csv = io::ConfigFilePath(m, "rao_csv");
   in.design.name = m.String("name", DefaultName(csv));
   if (in.design.name.empty()) m.Fail("name", "must not be empty");
   if (!single) {
@@ -177,7 +177,9 @@ void Run(const std::string& config_file, const std::string& out_dir) {
   if (computed) {
     DesignInput in;
     in.where = root.Where("hull");
-    in.design.name = std::filesystem::path(config_file).stem().string();
+    // Recorded in config.resolved.yaml, so that a re-run keeps the design's name.
+    in.design.name = root.String("name", std::filesystem::path(config_file).stem().string());
+    if (in.design.name.empty()) root.Fail("name", "must not be empty");
     const eval::DesignCase dc = io::LoadDesignCase(root, config_file, in.design.name);
     const std::vector<double> omega = eval::SeaFrequencies(dc);
     CheckRunCost("evaluate", io::StripWorkFromResolved(root.resolved(), static_cast<long>(omega.size())));
@@ -188,10 +190,10 @@ void Run(const std::string& config_file, const std::string& out_dir) {
     in.computed = dc;
     inputs.push_back(in);
   } else if (single) {
-    inputs.push_back(ReadDesign(root, config_file, g, true));
+    inputs.push_back(ReadDesign(root, g, true));
   } else {
     for (io::YamlMap& d : root.ListOfMaps("designs")) {
-      inputs.push_back(ReadDesign(d, config_file, g, false));
+      inputs.push_back(ReadDesign(d, g, false));
       d.Finish();
     }
   }
@@ -218,7 +220,7 @@ void Run(const std::string& config_file, const std::string& out_dir) {
   // Points are checked against each design's hull below (designs differ in length).
   const std::vector<sk::PassengerPosition> points = io::ReadPassengerPoints(positions, nullptr);
   positions.Finish();
-  const io::OperabilityConfig operability = io::ParseOperability(root, config_file, points);
+  const io::OperabilityConfig operability = io::ParseOperability(root, points);
   const io::ResolutionCheckConfig resolution = io::ReadResolutionCheck(root);
   io::YamlMap report_map = root.MapOrEmpty("report");
   io::EvaluationReportOptions report;

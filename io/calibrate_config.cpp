@@ -6,9 +6,8 @@ namespace hullopt::io {
 namespace {
 
 std::vector<std::string> DataFiles(YamlMap& m) {
-  std::vector<std::string> files = m.Strings("data");
+  std::vector<std::string> files = ConfigFilePaths(m, "data");
   if (files.empty()) m.Fail("data", "must list at least one tank RAO CSV file");
-  for (auto& f : files) f = ResolveConfigPath(f, m.file());
   return files;
 }
 

@@ -4,6 +4,7 @@
 #include <stdexcept>
 
 #include "evaluation/hull_plausibility.h"
+#include "io/config_path.h"
 #include "io/input_limits.h"
 #include "io/offsets_csv.h"
 #include "io/stl_reader.h"
@@ -86,7 +87,7 @@ HullOptions ParseHullConfig(YamlMap& root, const WaterOptions& water) {
     return o;
   }
   o.source = h.Has("stl") ? HullOptions::Source::kStl : HullOptions::Source::kOffsetsCsv;
-  o.file = h.String(h.Has("stl") ? "stl" : "offsets_csv");
+  o.file = ConfigFilePath(h, h.Has("stl") ? "stl" : "offsets_csv");
   o.draught_m = h.Number("draught_m");
   if (!(o.draught_m > 0.0)) h.Fail("draught_m", "must be > 0 m");
   o.hulls = h.Integer("hulls", 1);

@@ -54,11 +54,15 @@ std::unique_ptr<opt::Evaluator> ReadMsiObjective(YamlMap& root, YamlMap& objecti
     LoadDesignCase(check, root.file(), "base design", true, &c);
     check.Finish();
     basis = TrialBasis(c, root.file());
+    // The base design's blocks as read (defaults filled in, paths absolute) make config.resolved.yaml complete.
+    const YAML::Node read = check.resolved();
+    for (const char* k : {"hull", "water", "speed", "solver"}) {
+      root.Skip(k);
+      if (read[k]) root.resolved()[k] = YAML::Clone(read[k]);
+    }
   }
   basis.kyy_over_L = kyy_over_L;
   basis.kg_over_T = kg_over_T;
-  // Record the physics blocks in the resolved config through the strict reader too.
-  for (const char* k : {"hull", "water", "speed", "solver"}) root.Skip(k);
   std::vector<std::string> names;
   for (const auto& v : campaign.variables) names.push_back(v.name);
   return eval::MakeMsiEvaluator(std::move(basis), names, std::move(o));

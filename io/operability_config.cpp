@@ -58,13 +58,12 @@ sk::ScatterDiagram ReadScatterCsv(const std::string& path, double scale) {
   return d;
 }
 
-OperabilityConfig ParseOperability(YamlMap& root, const std::string& config_file,
-                                   const std::vector<sk::PassengerPosition>& user_points) {
+OperabilityConfig ParseOperability(YamlMap& root, const std::vector<sk::PassengerPosition>& user_points) {
   OperabilityConfig c;
   if (!root.Has("operability")) return c;
   c.present = true;
   YamlMap m = root.Map("operability");
-  c.scatter_csv = ResolveConfigPath(m.String("scatter_csv"), config_file);
+  c.scatter_csv = ConfigFilePath(m, "scatter_csv");
   const std::string unit = m.Choice("probabilities", {"fraction", "percent", "per_mille"}, "fraction");
   const double scale = unit == "fraction" ? 1.0 : (unit == "percent" ? 0.01 : 0.001);
   const std::string spectrum = m.Choice("spectrum", {"jonswap", "bretschneider"}, "jonswap");

@@ -35,7 +35,6 @@ struct OperabilityConfig {
 /// Reads the optional `operability:` block; checks the diagram (probabilities sum to 1 within
 /// sk::kScatterProbabilitySumTol, every cell a valid sea) and the criteria (positions among
 /// forward/lcg/transom/mean and `user_points`). Throws InputError naming the key or the CSV line.
-OperabilityConfig ParseOperability(YamlMap& root, const std::string& config_file,
-                                   const std::vector<sk::PassengerPosition>& user_points);
+OperabilityConfig ParseOperability(YamlMap& root, const std::vector<sk::PassengerPosition>& user_points);
 
 }  // namespace hullopt::io

@@ -16,11 +16,11 @@ double Positive(YamlMap& m, const std::string& key) {
   return v;
 }
 
-// The section of an offsets CSV (docs/file-formats.md; a relative path is tried from the working folder, then
-// from the config's folder) at x_m [m from AP], cut at draught_m [m above baseline] and shifted so that the
+// The section of an offsets CSV (docs/file-formats.md; a relative path is relative to the config's folder)
+// at x_m [m from AP], cut at draught_m [m above baseline] and shifted so that the
 // waterline is z = 0, as a half contour keel → waterline.
 sk::HalfContour OffsetsSection(YamlMap& s) {
-  const std::string file = ResolveConfigPath(s.String("offsets_csv"), s.file());
+  const std::string file = ConfigFilePath(s, "offsets_csv");
   const double x = s.Number("x_m");
   const double T = Positive(s, "draught_m");
   const hull::Demihull body = ReadOffsetsCsv(file, T);

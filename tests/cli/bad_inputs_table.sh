@@ -37,6 +37,7 @@ run() {
   fi
   [ $ok -eq 1 ] || fail=1
   local shown="${msg//$T\//}"
+  shown="${shown//$PWD\//}"  # files of the repository, named from its root
   shown="${shown//|/\\|}"
   printf '| %d | `%s` | %s | %d | %s |\n' "$n" "$1" "$DESC" "$rc" "$shown" >> "$T/rows.md"
 }
@@ -45,7 +46,7 @@ run() {
 P='type: catamaran, displacement_t: 1000, L_over_B: 11, B_over_T: 2, Cb: 0.4, Cp: 0.69, Cwp: 0.76, LCB_pct_L: -6.4, LCF_pct_L: -8.3'
 Q="$P, stations: 21, section_points: 10"
 SOLVER='solver: { sections: 10, panels: 6, frequencies: { lambda_over_L: [1.0, 1.5, 2.0] } }'
-D372='offsets_csv: data/delft372/delft372_offsets.csv, draught_m: 0.15, hulls: 2, spacing_m: 0.70'
+D372="offsets_csv: $PWD/data/delft372/delft372_offsets.csv, draught_m: 0.15, hulls: 2, spacing_m: 0.70"
 w() { printf '%s\n' "$2" > "$T/$1.yaml"; }
 awk -F, 'NR == 1 { print; next } { printf "%g,%g,%g\n", $1 * 1000, $2 * 1000, $3 * 1000 }' \
   data/delft372/delft372_offsets.csv > "$T/offsets_mm.csv"
@@ -92,7 +93,7 @@ speed: { Fn: 0.8 }
 $SOLVER"
 run overlap_rao 1 "the hulls overlap" - -- rao "$T/overlap_rao.yaml" --out "$T/o7"
 DESC='`spacing_m` smaller than the demihull beam (offsets)'
-w overlap_file "hull: { offsets_csv: data/delft372/delft372_offsets.csv, draught_m: 0.15, hulls: 2, spacing_m: 0.1, length_m: 3.0 }"
+w overlap_file "hull: { offsets_csv: $PWD/data/delft372/delft372_offsets.csv, draught_m: 0.15, hulls: 2, spacing_m: 0.1, length_m: 3.0 }"
 run overlap_file 1 "the hulls overlap" - -- hull "$T/overlap_file.yaml" --out "$T/o8"
 DESC='`mass_kg` ten times the displacement (rao)'
 w heavy "hull: { $D372, length_m: 3.0 }
@@ -261,7 +262,7 @@ calibrate: { data: [$T/none.csv], mode: single, $CAL_MODEL }"
 run calibrate_missing_data 1 "none.csv" - -- calibrate "$T/cal_missing.yaml" --out "$T/o48"
 
 DESC='`draught_m: 1e300`'
-w draught "hull: { offsets_csv: data/delft372/delft372_offsets.csv, draught_m: 1e300 }"
+w draught "hull: { offsets_csv: $PWD/data/delft372/delft372_offsets.csv, draught_m: 1e300 }"
 run draught_huge 1 "key 'hull.draught_m' = 1e300: is not a hull dimension" - -- hull "$T/draught.yaml" --out "$T/o49"
 DESC='`displacement_t: 1e12`'
 w disp "hull: { parametric: { type: catamaran, displacement_t: 1e12, L_over_B: 11, B_over_T: 2, Cb: 0.4, Cp: 0.69, Cwp: 0.76, LCB_pct_L: 0, LCF_pct_L: 0 } }"

@@ -9,7 +9,7 @@ T=$(mktemp -d)
 trap 'rm -rf "$T"' EXIT
 fail=0
 check() { if ! eval "$2"; then echo "FAIL: $1"; fail=1; fi; }
-DELFT=data/delft372/delft372_tank_rao_fn075.csv
+DELFT=$PWD/data/delft372/delft372_tank_rao_fn075.csv
 MODEL='model: { synthetic_oscillator: { heave_natural_rad_s: 8.1, pitch_natural_rad_s: 8.4 } }'
 
 # 1. The demo example: contract files and keys.
@@ -81,7 +81,7 @@ expect_error speed_in_knots "$(printf 'speed: { kn: 20 }\ncalibrate:\n  data: [%
 expect_error bad_mode "$(cfg "$DELFT" '  mode: everything')" "one of: single, per_speed, linear_in_parameter"
 expect_error negative_weight "$(cfg "$DELFT" '  weights: { heave: -1 }')" "calibrate.weights.heave' = -1: must be >= 0"
 expect_error no_model "$(printf 'speed: { Fn: 0.75 }\ncalibrate:\n  data: [%s]\n' "$DELFT")" "missing required key 'hull'"
-expect_error missing_file "$(cfg "$T/nope.csv")" "nope.csv: cannot open tank RAO file"
+expect_error missing_file "$(cfg "$T/nope.csv")" "nope.csv': no such file"
 
 [ $fail -eq 0 ] && echo "cli calibrate: all checks passed"
 exit $fail

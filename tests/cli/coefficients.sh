@@ -11,7 +11,7 @@ fail() { echo "FAIL: $*"; exit 1; }
 
 base() {  # $1: extra solver keys, $2: frequencies block
   cat <<YAML
-hull: { offsets_csv: data/delft372/delft372_offsets.csv, draught_m: 0.15, length_m: 3.0, hulls: 2, spacing_m: 0.70 }
+hull: { offsets_csv: $PWD/data/delft372/delft372_offsets.csv, draught_m: 0.15, length_m: 3.0, hulls: 2, spacing_m: 0.70 }
 mass: { mass_kg: 87.07, lcg_m_from_ap: 1.41, kyy_m: 0.782 }
 speed: { Fn: 0.75 }
 water: { rho_kg_m3: 1000 }
@@ -76,7 +76,7 @@ expect_error time_marching "$(base "path: time_marching," "{ lambda_over_L: [1.5
 # 20 sections at Fn 0.75: dt = 0.0368 s, so omega_e above 21.3 rad/s is not resolved (lambda/L 0.3: 29 rad/s).
 expect_error unresolved "$(base "" "{ lambda_over_L: [0.3, 1.5] }")" "outside the strip kernel's range"
 expect_error no_frequencies "$(cat <<YAML
-hull: { offsets_csv: data/delft372/delft372_offsets.csv, draught_m: 0.15, length_m: 3.0, hulls: 2, spacing_m: 0.70 }
+hull: { offsets_csv: $PWD/data/delft372/delft372_offsets.csv, draught_m: 0.15, length_m: 3.0, hulls: 2, spacing_m: 0.70 }
 speed: { Fn: 0.75 }
 water: { rho_kg_m3: 1000 }
 solver: { sections: 20, panels: 8 }

@@ -28,13 +28,13 @@ awk -v a="$a" -v b="$b" 'BEGIN { d = a - b; if (d < 0) d = -d; exit !(d > 0.01 *
   fail "MSI with strip_theory_stf ($b%) equals the time-domain one ($a%): solver.method ignored?"
 echo "ok: mean MSI 3 m seas: time-domain strip $a%, strip theory $b%"
 cat > "$work/cal.yaml" <<YAML
-hull: { offsets_csv: data/delft372/delft372_offsets.csv, draught_m: 0.15, hulls: 2, spacing_m: 0.70, length_m: 3.0 }
+hull: { offsets_csv: $PWD/data/delft372/delft372_offsets.csv, draught_m: 0.15, hulls: 2, spacing_m: 0.70, length_m: 3.0 }
 mass: { mass_kg: 87.07, lcg_m_from_ap: 1.41, kyy_m: 0.782, kg_m: 0.34 }
 water: { rho_kg_m3: 1000, g_m_s2: 9.81 }
 speed: { Fn: 0.75 }
 solver: { method: strip_theory_stf, sections: 20, panels: 8 }
 calibrate:
-  data: [data/delft372/delft372_tank_rao_fn075.csv]
+  data: [$PWD/data/delft372/delft372_tank_rao_fn075.csv]
 YAML
 err=$("$HULLOPT" calibrate "$work/cal.yaml" --out "$work/cal" 2>&1 > /dev/null); rc=$?
 [ "$rc" -eq 1 ] || fail "calibrate with strip_theory_stf: exit $rc (want 1): $err"

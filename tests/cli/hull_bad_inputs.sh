@@ -73,7 +73,7 @@ bad empty_stl     "STL file is empty" "hull:
 bad trunc_stl     "truncated or corrupt binary STL" "hull:
   stl: $T/trunc.stl
   draught_m: 0.1"
-bad no_file       "cannot open offsets file" "hull:
+bad no_file       "hull.offsets_csv' = $T/does_not_exist.csv: no such file" "hull:
   offsets_csv: $T/does_not_exist.csv
   draught_m: 0.15"
 bad speed_units   "give exactly one of Fn, kn, m_s" "hull:

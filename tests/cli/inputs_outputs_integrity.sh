@@ -38,7 +38,7 @@ grep -q "omega 0.6..1 rad/s" "$work/list.err" || { cat "$work/list.err" >&2; fai
 # 2. calibrate: overflowing tank RAOs are refused with the rule.
 for big in 1e200 1e308; do
   awk -F, -v OFS=, -v b="$big" 'NR==3{$6=b} {print}' data/delft372/delft372_tank_rao_fn075.csv > "$work/tank_$big.csv"
-  sed "s|data/delft372/delft372_tank_rao_fn075.csv|$work/tank_$big.csv|" examples/calibrate_synthetic.yaml > "$work/cal_$big.yaml"
+  sed "s|\.\./data/delft372/delft372_tank_rao_fn075.csv|$work/tank_$big.csv|" examples/calibrate_synthetic.yaml > "$work/cal_$big.yaml"
   "$HULLOPT" calibrate "$work/cal_$big.yaml" --out "$work/cal_$big" > "$work/cal_$big.out" 2> "$work/cal_$big.err" &&
     fail "calibrate accepted a pitch RAO of $big"
   grep -q "tank_$big.csv:3: column 'pitch_rao' = 1e+${big#1e}: must be <= 100" "$work/cal_$big.err" ||

@@ -9,7 +9,7 @@ fail() { echo "FAIL: $*"; exit 1; }
 
 base() {  # $1: speed block, $2: frequencies block
   cat <<YAML
-hull: { offsets_csv: data/delft372/delft372_offsets.csv, draught_m: 0.15, length_m: 3.0, hulls: 2, spacing_m: 0.70 }
+hull: { offsets_csv: $PWD/data/delft372/delft372_offsets.csv, draught_m: 0.15, length_m: 3.0, hulls: 2, spacing_m: 0.70 }
 mass: { mass_kg: 87.07, lcg_m_from_ap: 1.41, kyy_m: 0.782 }
 speed: $1
 water: { rho_kg_m3: 1000 }

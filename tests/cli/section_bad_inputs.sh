@@ -93,13 +93,13 @@ expect_error unknown_method "section.method" "section:
 $FREQ"
 expect_error offsets_x_outside "section.x_m" "section:
   shape: offsets
-  offsets_csv: data/delft372/delft372_offsets.csv
+  offsets_csv: $PWD/data/delft372/delft372_offsets.csv
   x_m: 3.5
   draught_m: 0.15
 $FREQ"
 expect_error offsets_missing_x "x_m" "section:
   shape: offsets
-  offsets_csv: data/delft372/delft372_offsets.csv
+  offsets_csv: $PWD/data/delft372/delft372_offsets.csv
   draught_m: 0.15
 $FREQ"
 expect_error offsets_missing_file "no_such_offsets.csv" "section:
@@ -110,7 +110,7 @@ expect_error offsets_missing_file "no_such_offsets.csv" "section:
 $FREQ"
 expect_error offsets_bad_draught "section.draught_m" "section:
   shape: offsets
-  offsets_csv: data/delft372/delft372_offsets.csv
+  offsets_csv: $PWD/data/delft372/delft372_offsets.csv
   x_m: 1.5
   draught_m: 0
 $FREQ"

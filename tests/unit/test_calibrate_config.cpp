@@ -2,6 +2,9 @@
 // sections are refused naming the key.
 #include <catch2/catch.hpp>
 
+#include <filesystem>
+#include <fstream>
+
 #include "io/calibrate_config.h"
 
 using hullopt::io::ReadCalibrateConfig;
@@ -9,8 +12,13 @@ using hullopt::io::YamlMap;
 using namespace hullopt::opt;
 
 namespace {
+// The data files a.csv and b.csv exist beside the config (their paths are checked when read, not their content).
+const std::filesystem::path kDir = std::filesystem::path(HULLOPT_BINARY_DIR) / "calibrate_config_test";
+
 YamlMap FromText(const std::string& text) {
-  return YamlMap(YAML::Load(text), "", "test.yaml", YAML::Node(YAML::NodeType::Map));
+  std::filesystem::create_directories(kDir);
+  for (const char* f : {"a.csv", "b.csv"}) std::ofstream(kDir / f) << "\n";
+  return YamlMap(YAML::Load(text), "", (kDir / "test.yaml").string(), YAML::Node(YAML::NodeType::Map));
 }
 }  // namespace
 
@@ -38,7 +46,9 @@ TEST_CASE("single-hull form with every option", "[calibrate-config]") {
   CHECK(cfg.options.use_phases);
   CHECK(cfg.options.Cs_initial == 0.03);
   REQUIRE(cfg.hulls.size() == 1);
-  CHECK(cfg.hulls[0].data_files == std::vector<std::string>{"a.csv", "b.csv"});
+  // Relative to the config's folder, absolute.
+  CHECK(cfg.hulls[0].data_files == std::vector<std::string>{(kDir / "a.csv").string(), (kDir / "b.csv").string()});
+  CHECK(root.resolved()["calibrate"]["data"][1].as<std::string>() == (kDir / "b.csv").string());
   REQUIRE(cfg.hulls[0].synthetic.has_value());
   CHECK(cfg.hulls[0].synthetic->heave_natural_rad_s == 7.0);
   CHECK(root.resolved()["calibrate"]["loss"]["type"].as<std::string>() == "cauchy");
@@ -74,6 +84,8 @@ TEST_CASE("contradictory or incomplete calibrate sections are refused", "[calibr
   fails("speed: { Fn: 0.75 }\ncalibrate: { data: [a.csv], hulls: [{name: A, data: [a.csv]}] }\n",
         "either 'data'");
   fails("speed: { Fn: 0.75 }\ncalibrate: { mode: single }\n", "either 'data'");
+  fails("speed: { Fn: 0.75 }\ncalibrate: { data: [a.csv, c.csv] }\n",
+        "key 'calibrate.data': 'c.csv': no such file " + (kDir / "c.csv").string());
   fails("speed: { Fn: 0.75 }\ncalibrate: { data: [a.csv], mode: linear_in_parameter }\n",
         "at least two 'hulls'");
   fails("speed: { Fn: 0.75 }\ncalibrate: { speeds_Fn: [0.75], data: [a.csv] }\n", "not both");

@@ -96,7 +96,7 @@ TEST_CASE("bad hull inputs: one line naming key or line and the rule", "[hull-co
   CheckOneLine(Run(Param("") + "  offsets_csv: x.csv\n"), "key 'hull'",
                "exactly one of parametric, offsets_csv, stl");
   // 11 non-existent file
-  CheckOneLine(Run(Offsets("missing.csv")), "missing.csv", "cannot open");
+  CheckOneLine(Run(Offsets("missing.csv")), "hull.offsets_csv' = " + kDir + "/missing.csv", "no such file");
   // 12 malformed CSV row
   Write("malformed.csv", "x_m,y_m,z_m\n0,0,0\n0,0.1\n");
   CheckOneLine(Run(Offsets("malformed.csv")), "malformed.csv:3", "malformed row");
