@@ -78,12 +78,14 @@ PlotFigure CoefficientsFigure(const std::vector<sk::CoefficientTable>& curves,
       }
       auto s = PlotSeries::Line(c < labels.size() ? labels[c] : "", x, y);
       s.color = palette[c % 4];
+      if (pd.phase) s.wrap_period = 360.0;
       p.series.push_back(s);
       if (pd.fk) {
         auto f = PlotSeries::Line("", x, yfk);
         f.color = palette[c % 4];
         f.dash = "6 3";
         f.line_width_px = 1.0;
+        if (pd.phase) f.wrap_period = 360.0;
         p.series.push_back(f);
       }
     }

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "io/rao_axis_labels.h"
 #include "seas/point_response.h"
 
 namespace hullopt::io {
@@ -91,17 +92,19 @@ PlotFigure RaoFigure(const std::vector<EvaluatedDesign>& designs) {
   double we_max = 0.0;
   for (const auto& d : designs)
     for (const auto& s : d.evaluation.seas) we_max = std::max(we_max, 2.5 * s.peak_omega_e_rad_s);
+  // Ending the axis on a tick: the next nice value above.
+  if (we_max > 0.0) we_max = NiceLinearTicks(0.0, we_max).back();
   fig.title = "Heave and pitch RAOs in head seas";
   fig.columns = 2;
   for (const auto& group : Groups(designs)) {
-    auto& heave = fig.AddPanel(GroupTitle(group, "Heave"), "encounter frequency ω_e [rad/s]", "|x3|/A [m/m]");
+    auto& heave = fig.AddPanel(GroupTitle(group, "Heave"), "encounter frequency ω_e [rad/s]", kHeaveRaoLabel);
     heave.legend = LegendPlace::kNone;
     heave.y_include_zero = true;
     if (we_max > 0.0) heave.x_min = 0.0, heave.x_max = we_max;
     PlotPanel pitch;
     pitch.title = GroupTitle(group, "Pitch");
     pitch.x_label = "encounter frequency ω_e [rad/s]";
-    pitch.y_label = "|x5|/(kA) [-]";
+    pitch.y_label = kPitchRaoLabel;
     pitch.legend = LegendPlace::kOutsideRight;
     pitch.y_include_zero = true;
     pitch.x_min = heave.x_min, pitch.x_max = heave.x_max;
