@@ -14,12 +14,11 @@ namespace {
 // At most this many sections per half of the drawing (more become an unreadable blur).
 constexpr int kMaxSectionsPerHalf = 11;
 // Layout [px]: a gutter on the left for the waterline and baseline labels (so they never meet a section),
-// the right margin, room above the drawing for the headings and up to kLabelRows rows of station numbers,
-// and room below for the scale bar.
+// the right margin, room above the drawing for the headings and the row of station numbers, and room below
+// for the scale bar.
 constexpr double kWidth = 960, kMaxHeight = 640, kLabelGutter = 130, kRightMargin = 40, kBottomMargin = 60;
-constexpr int kLabelRows = 4;
-constexpr double kRowHeight = 11, kStationFont = 9.5;
-constexpr double kTop = 64 + kLabelRows * kRowHeight;
+constexpr double kStationFont = 9.5;
+constexpr double kTop = 96;
 constexpr double kCharWidth = 0.6;  // average glyph advance / font size (layout estimate)
 
 std::string Fmt(double v, const char* format = "%.4g") {
@@ -45,6 +44,8 @@ double ScaleBarMetres(double drawing_width_m) {
 struct StationLabel {
   double x, y;  // anchor: the top of the section line [px]
   std::string text;
+  double station;  // x / L × 10: the order of the labels
+  int half;        // 0 aft (left), 1 forward (right)
   const char* colour;
 };
 
@@ -134,24 +135,57 @@ void WriteBodyPlanSvg(const std::string& path, const hull::HullForm& hull, const
           size_t top = 0;
           for (size_t k = 1; k < s.z_m.size(); ++k)
             if (s.z_m[k] > s.z_m[top]) top = k;
-          labels.push_back({X(yc + sign * s.y_m[top]), Z(s.z_m[top]), StationNumber(s.x_m, length_m), colour});
+          labels.push_back({X(yc + sign * s.y_m[top]), Z(s.z_m[top]), StationNumber(s.x_m, length_m),
+                            length_m > 0.0 ? 10.0 * s.x_m / length_m : 0.0, half, colour});
         }
       }
     }
   }
-  // Station numbers in rows above the drawing: each in the lowest row where it overlaps no other.
-  std::sort(labels.begin(), labels.end(), [](const StationLabel& a, const StationLabel& b) { return a.x < b.x; });
-  std::vector<double> row_end(kLabelRows, -1e9);
-  const double drawing_top = Z(zmax);
-  for (const auto& l : labels) {
-    const double w = kCharWidth * kStationFont * l.text.size();
-    for (int r = 0; r < kLabelRows; ++r) {
-      if (l.x - w / 2 < row_end[r] + 2) continue;
-      row_end[r] = l.x + w / 2;
-      const double y = drawing_top - 4 - r * kRowHeight;
-      svg << "<text class=\"station-number\" x=\"" << l.x << "\" y=\"" << y << "\" font-size=\"" << kStationFont
-          << "\" text-anchor=\"middle\" fill=\"" << l.colour << "\">" << l.text << "</text>\n";
-      break;
+  // Station numbers in a row above the drawing, each joined by a leader to the top of its section: where
+  // sections end close together their numbers are spread apart (clusters of touching labels are centred on
+  // their sections).
+  // In station order, fullest (midships) outboard on each half: the order in which the section tops mostly
+  // lie, and readable where they end together.
+  std::sort(labels.begin(), labels.end(), [](const StationLabel& a, const StationLabel& b) {
+    return a.half != b.half ? a.half < b.half : a.station > b.station;
+  });
+  struct Cluster {
+    size_t first, last;  // labels [first, last]
+    double width, offset_sum;  // total width with gaps; sum of (anchor − label centre offset in the cluster)
+    double Start() const { return offset_sum / double(last - first + 1); }
+  };
+  const double gap = 4.0;
+  auto width = [&](const StationLabel& l) { return kCharWidth * kStationFont * l.text.size() + gap; };
+  std::vector<Cluster> clusters;
+  for (size_t i = 0; i < labels.size(); ++i) {
+    const double w = width(labels[i]);
+    clusters.push_back({i, i, w, labels[i].x - w / 2});
+    while (clusters.size() > 1) {
+      Cluster& prev = clusters[clusters.size() - 2];
+      const Cluster& cur = clusters.back();
+      if (prev.Start() + prev.width <= cur.Start()) break;
+      // Merge: every member's anchor minus its centre offset from the merged start, averaged.
+      double offset_sum = prev.offset_sum, along = prev.width;
+      for (size_t k = cur.first; k <= cur.last; ++k) {
+        const double wk = width(labels[k]);
+        offset_sum += labels[k].x - (along + wk / 2);
+        along += wk;
+      }
+      prev = {prev.first, cur.last, along, offset_sum};
+      clusters.pop_back();
+    }
+  }
+  const double drawing_top = Z(zmax), label_y = drawing_top - 22;
+  for (const auto& c : clusters) {
+    double x = std::clamp(c.Start(), double(kLabelGutter), kWidth - kRightMargin - c.width);
+    for (size_t k = c.first; k <= c.last; ++k) {
+      const auto& l = labels[k];
+      const double w = width(l), centre = x + w / 2;
+      svg << "<line class=\"station-leader\" x1=\"" << centre << "\" y1=\"" << label_y + 3 << "\" x2=\"" << l.x
+          << "\" y2=\"" << l.y - 2 << "\" stroke=\"" << l.colour << "\" stroke-width=\"0.5\" stroke-opacity=\"0.6\"/>"
+          << "<text class=\"station-number\" x=\"" << centre << "\" y=\"" << label_y << "\" font-size=\""
+          << kStationFont << "\" text-anchor=\"middle\" fill=\"" << l.colour << "\">" << l.text << "</text>\n";
+      x += w;
     }
   }
   // Scale bar under the drawing, right-aligned.
