@@ -65,6 +65,8 @@ PlotFigure CoefficientsFigure(const std::vector<sk::CoefficientTable>& curves,
   for (const auto& pd : panels) {
     PlotPanel& p = fig.AddPanel(pd.title, "ω_e √(L/g) [-]", pd.title + " " + pd.unit);
     p.y_include_zero = !pd.phase;
+    // One legend for the figure (the same curves and points in every panel).
+    if (&pd != &panels.front()) p.legend = LegendPlace::kNone;
     if (pd.phase) {
       p.y_min = -180;
       p.y_max = 180;

@@ -322,9 +322,37 @@ std::vector<std::pair<size_t, Point>> MarkerPoints(const PlotSeries& s, const Ax
   return pts;
 }
 
-// Box of a point label (text at +6, −6 px from the point, 10 px font).
-Box PointLabelBox(const Point& p, const std::string& label) {
-  return {p.x + 6.0, p.y - 16.0, p.x + 6.0 + TextWidth(label, 10.0), p.y - 4.0};
+// A point label: text (10 px font) beside its marker, above-right unless that overlaps a label placed
+// before, then below-right, above-left, below-left.
+struct PointLabel {
+  double x, y;  // baseline start
+  std::string text;
+  Box box;
+};
+
+std::vector<PointLabel> PlacePointLabels(const PlotPanel& panel, const Axis& ax, const Axis& ay, const Box& area) {
+  std::vector<PointLabel> placed;
+  for (const auto& s : panel.series)
+    for (const auto& [k, p] : MarkerPoints(s, ax, ay, area)) {
+      if (k >= s.point_labels.size() || s.point_labels[k].empty()) continue;
+      const std::string& text = s.point_labels[k];
+      const double w = TextWidth(text, 10.0);
+      const Point offsets[] = {{6.0, -6.0}, {6.0, 14.0}, {-6.0 - w, -6.0}, {-6.0 - w, 14.0}};
+      PointLabel best{};
+      for (int c = 0; c < 4; ++c) {
+        const double bx = p.x + offsets[c].x, by = p.y + offsets[c].y;
+        PointLabel l{bx, by, text, {bx, by - 10.0, bx + w, by + 2.0}};
+        if (c == 0) best = l;
+        bool free = true;
+        for (const auto& q : placed) free = free && !q.box.Intersects(l.box);
+        if (free) {
+          best = l;
+          break;
+        }
+      }
+      placed.push_back(best);
+    }
+  return placed;
 }
 
 // How many drawn items (line segments, markers, point labels) of the panel a box covers.
@@ -337,14 +365,13 @@ int CountCovered(const PlotPanel& panel, const Axis& ax, const Axis& ay, const B
           Point a = run[i - 1], b = run[i];
           count += ClipSegment(box, &a, &b);
         }
-    for (const auto& [k, p] : MarkerPoints(s, ax, ay, area)) {
+    for (const auto& kp : MarkerPoints(s, ax, ay, area)) {
+      const Point& p = kp.second;
       const double r = s.markers ? 0.5 * s.marker_size_px : 0.0;
       if (s.markers && box.Intersects({p.x - r, p.y - r, p.x + r, p.y + r})) ++count;
-      if (k < s.point_labels.size() && !s.point_labels[k].empty() &&
-          box.Intersects(PointLabelBox(p, s.point_labels[k])))
-        ++count;
     }
   }
+  for (const auto& l : PlacePointLabels(panel, ax, ay, area)) count += box.Intersects(l.box);
   return count;
 }
 
@@ -547,14 +574,15 @@ void DrawPanel(std::ostringstream& o, const PlotPanel& panel, int panel_index, d
   for (size_t i = 0; i < panel.series.size(); ++i) {
     const auto& s = panel.series[i];
     const Style st = SeriesStyle(s, static_cast<int>(i));
-    for (const auto& [k, p] : MarkerPoints(s, ax, ay, area)) {
-      if (s.markers) o << Marker(s.marker, p.x, p.y, s.marker_size_px, st.color, s.hollow_markers);
-      if (k < s.point_labels.size() && !s.point_labels[k].empty())
-        o << "<text x=\"" << Num(p.x + 6) << "\" y=\"" << Num(p.y - 6) << "\" font-size=\"10\" fill=\"#333\">"
-          << Escape(s.point_labels[k]) << "</text>";
-    }
+    if (s.markers)
+      for (const auto& kp : MarkerPoints(s, ax, ay, area))
+        o << Marker(s.marker, kp.second.x, kp.second.y, s.marker_size_px, st.color, s.hollow_markers);
     o << "\n";
   }
+  for (const auto& l : PlacePointLabels(panel, ax, ay, area))
+    o << "<text class=\"point-label\" x=\"" << Num(l.x) << "\" y=\"" << Num(l.y)
+      << "\" font-size=\"10\" fill=\"#333\">" << Escape(l.text) << "</text>";
+  o << "\n";
   o << "</g>\n</g>\n";
   // Frame over the data.
   o << "<rect class=\"frame\" x=\"" << Num(left) << "\" y=\"" << Num(top) << "\" width=\"" << Num(right - left)
@@ -676,8 +704,9 @@ std::string RenderSvg(const PlotFigure& figure) {
       << "</text>\n";
   for (size_t i = 0; i < figure.panels.size(); ++i) {
     const int r = static_cast<int>(i) / cols, c = static_cast<int>(i) % cols;
-    DrawPanel(o, figure.panels[i], static_cast<int>(i), col_x[c], title_h + r * cell_h, col_w[c], cell_h,
-              outside[i]);
+    // A panel with its legend inside keeps the common width in a widened column (equal plot areas).
+    DrawPanel(o, figure.panels[i], static_cast<int>(i), col_x[c], title_h + r * cell_h,
+              outside[i] ? col_w[c] : figure.panel_width_px, cell_h, outside[i]);
   }
   if (!figure.footnote.empty())
     o << "<text x=\"12\" y=\"" << Num(height - 8) << "\" font-size=\"10\" fill=\"#666\">"
