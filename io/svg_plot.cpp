@@ -322,8 +322,8 @@ std::vector<std::pair<size_t, Point>> MarkerPoints(const PlotSeries& s, const Ax
   return pts;
 }
 
-// A point label: text (10 px font) beside its marker, above-right unless that overlaps a label placed
-// before, then below-right, above-left, below-left.
+// A point label: text (10 px font) beside its marker, above-right unless that leaves the plot area or
+// overlaps a label placed before, then below-right, above-left, below-left.
 struct PointLabel {
   double x, y;  // baseline start
   std::string text;
@@ -343,7 +343,9 @@ std::vector<PointLabel> PlacePointLabels(const PlotPanel& panel, const Axis& ax,
         const double bx = p.x + offsets[c].x, by = p.y + offsets[c].y;
         PointLabel l{bx, by, text, {bx, by - 10.0, bx + w, by + 2.0}};
         if (c == 0) best = l;
-        bool free = true;
+        // Inside the plot area (widened as the markers' clip path), clear of the labels placed before.
+        bool free = l.box.x0 >= area.x0 - 6.0 && l.box.x1 <= area.x1 + 6.0 && l.box.y0 >= area.y0 - 6.0 &&
+                    l.box.y1 <= area.y1 + 6.0;
         for (const auto& q : placed) free = free && !q.box.Intersects(l.box);
         if (free) {
           best = l;
