@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "io/design_variable_label.h"
 #include "io/rao_axis_labels.h"
 #include "seas/point_response.h"
 
@@ -245,7 +246,7 @@ PlotFigure MsiVsParameterFigure(const std::vector<EvaluatedDesign>& designs, con
   std::string sea_label = designs.empty() || sea >= designs[0].evaluation.seas.size()
                               ? ""
                               : SeaLabel(designs[0].evaluation.seas[sea]);
-  fig.title = "Mean MSI in " + sea_label + " vs " + parameter;
+  fig.title = "Mean MSI in " + sea_label + " vs " + DesignVariableName(parameter);
   fig.panel_width_px = 560.0;
   fig.panel_height_px = 380.0;
   auto& p = fig.AddPanel("", axis_label, "MSI [%]");
