@@ -11,6 +11,7 @@
 #include "io/hull_config.h"
 #include "io/input_error.h"
 #include "io/motion_config.h"
+#include "io/rao_comparison.h"
 #include "io/rao_csv_writer.h"
 #include "io/rao_plot.h"
 #include "io/speed_config.h"
@@ -50,6 +51,9 @@ void RunRao(const std::string& config_file, const std::string& out_dir) {
   }
   auto mass_map = root.MapOrEmpty("mass");
   const hull::MassProperties mass = io::ParseMassConfig(mass_map, hs, &input_warnings);
+  const double U = speed.MetresPerSecond(hs.L_m, water.g_m_s2);
+  const std::optional<io::MeasuredRao> measured =
+      io::ReadRaoComparison(root, U / std::sqrt(water.g_m_s2 * hs.L_m), hs.L_m, water.g_m_s2);
   root.Finish();
   // The strips see the hull at its running attitude (the hull itself at even keel).
   const hull::HullForm running = io::ApplyHullAttitude(hull_opts, hull, mass.lcg_m_from_ap, config_file);
@@ -64,7 +68,6 @@ void RunRao(const std::string& config_file, const std::string& out_dir) {
   } catch (const std::exception& e) {
     throw io::InputError("hull '" + hull_name + "': " + e.what());
   }
-  const double U = speed.MetresPerSecond(hs.L_m, water.g_m_s2);
   const sk::StripKernelBuilder builder = kernel_kind == "impulsive"
                                              ? sk::StripKernelBuilder(sk::FillImpulsiveStripKernel)
                                              : sk::TransientGreenKernelBuilder(sc.sectional_force);
@@ -104,7 +107,8 @@ void RunRao(const std::string& config_file, const std::string& out_dir) {
   }
   const std::string curve =
       sc.rao.method == sk::RaoSolverOptions::Method::kStripTheory ? "strip theory (STF type)" : "time-domain strip (" + kernel_kind + ")";
-  io::WriteSvg(io::RaoFigure({t}, {curve}, hs.L_m, "RAOs: " + fn.str()), OutPath(out_dir, "rao.svg"));
+  io::WriteSvg(io::RaoFigure({t}, {curve}, hs.L_m, "RAOs: " + fn.str(), measured ? &*measured : nullptr),
+               OutPath(out_dir, "rao.svg"));
   // One line for the console: where the heave and pitch peaks are (parabola through the largest sample).
   std::vector<double> lam, heave, pitch;
   for (std::size_t i = 0; i < t.omega_rad_s.size(); ++i) {
@@ -115,8 +119,10 @@ void RunRao(const std::string& config_file, const std::string& out_dir) {
   const auto h = opt::InterpolatedPeak(lam, heave), p = opt::InterpolatedPeak(lam, pitch);
   auto edge = [](const opt::RaoPeak& r) { return r.at_edge ? " (at the end of the range)" : ""; };
   std::printf("hull '%s': heave peak %.4g m/m at lambda/L %.3g%s, pitch peak %.4g rad/rad at lambda/L %.3g%s; "
-              "wrote rao.csv, rao.svg in %s\n",
-              hull_name.c_str(), h.value, h.x, edge(h), p.value, p.x, edge(p), out_dir.c_str());
+              "%swrote rao.csv, rao.svg in %s\n",
+              hull_name.c_str(), h.value, h.x, edge(h), p.value, p.x, edge(p),
+              measured ? ("measured points drawn: " + std::to_string(measured->heave_amp.size()) + "; ").c_str() : "",
+              out_dir.c_str());
 }
 
 }  // namespace
@@ -125,7 +131,7 @@ void AddRaoCommand(CLI::App& app) {
   auto* cmd = app.add_subcommand("rao", "heave and pitch RAOs in head seas (rao.csv, rao.svg)");
   auto config = std::make_shared<std::string>();
   auto out = std::make_shared<std::string>();
-  cmd->add_option("config", *config, "YAML config (hull, mass, speed, water, solver)")->required();
+  cmd->add_option("config", *config, "YAML config (hull, mass, speed, water, solver, compare)")->required();
   cmd->add_option("--out", *out, "output folder")->required();
   cmd->callback([config, out] {
     const OutputFolderGuard lock(*out, "rao", *config);

@@ -101,6 +101,16 @@ class MsiEvaluator : public opt::Evaluator, public ResolutionCheckable {
     }
     return n;
   }
+  // Short enough for a y axis: "mean MSI over 2 seas [%]", "rms accel. LCG [g]".
+  std::string ObjectiveLabel() const override {
+    if (o_.measure == Measure::kEffectivePower) return "P_E at the design speed [kW]";
+    static const char* const kPositions[] = {"forward", "LCG", "transom"};
+    const bool accel = o_.measure == Measure::kRmsAccel;
+    std::string label = o_.position < 0 ? std::string(accel ? "mean rms accel." : "mean MSI")
+                                        : std::string(accel ? "rms accel. " : "MSI ") + kPositions[o_.position];
+    if (o_.seas.size() > 1) label += " over " + std::to_string(o_.seas.size()) + " seas";
+    return label + (accel ? " [g]" : " [%]");
+  }
   std::vector<std::string> QuantityNames() const override { return kQuantities; }
   std::vector<std::string> VariableNames() const override {
     std::vector<std::string> names;

@@ -4,6 +4,8 @@
 #include <cstdio>
 #include <numeric>
 
+#include "io/rao_axis_labels.h"
+
 namespace hullopt::io {
 namespace {
 
@@ -32,9 +34,9 @@ PlotFigure CalibrationPlot(const std::vector<opt::CalibrationCase>& cases, const
   const std::string xlabel = all_l ? "λ/L [-]" : "ω_e [rad/s]";
   for (int q = 0; q < 2; ++q) {
     PlotPanel& panel =
-        fig.AddPanel(q == 0 ? "heave" : "pitch", xlabel, q == 0 ? "|x3|/A [m/m]" : "|x5|/(kA) [-]");
+        fig.AddPanel(q == 0 ? "heave" : "pitch", xlabel, q == 0 ? kHeaveRaoLabel : kPitchRaoLabel);
     panel.y_include_zero = true;
-    panel.legend = LegendPlace::kTopLeft;
+    panel.legend = LegendPlace::kAuto;
     for (std::size_t c = 0; c < cases.size(); ++c) {
       const auto& pts = cases[c].points;
       std::vector<std::size_t> order(pts.size());

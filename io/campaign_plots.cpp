@@ -4,6 +4,7 @@
 #include <cmath>
 #include <numeric>
 
+#include "io/design_variable_label.h"
 #include "io/svg_plot.h"
 
 namespace hullopt::io {
@@ -57,7 +58,7 @@ void WriteOptimizePlots(const std::string& dir, const std::vector<opt::Evaluatio
       e.push_back(static_cast<double>(i));
       v.push_back(records[i].x[j]);
     }
-    PlotPanel& q = vars.AddPanel(names[j], "evaluation", names[j]);
+    PlotPanel& q = vars.AddPanel(DesignVariableName(names[j]), "evaluation", DesignVariableAxisLabel(names[j]));
     q.y_min = lower[j];
     q.y_max = upper[j];
     auto s = PlotSeries::LineMarkers("", e, v);
@@ -81,7 +82,7 @@ void WriteExplorePlots(const std::string& dir, const std::vector<opt::Evaluation
       (r.feasible ? xf : xi).push_back(r.x[j]);
       (r.feasible ? yf : yi).push_back(r.result.objective);
     }
-    PlotPanel& p = fig.AddPanel(names[j], names[j], objective_label);
+    PlotPanel& p = fig.AddPanel(DesignVariableName(names[j]), DesignVariableAxisLabel(names[j]), objective_label);
     p.pad_fraction = 0.06;
     auto s = PlotSeries::Markers("samples", xf, yf);
     s.marker_size_px = 4;

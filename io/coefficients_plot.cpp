@@ -65,6 +65,8 @@ PlotFigure CoefficientsFigure(const std::vector<sk::CoefficientTable>& curves,
   for (const auto& pd : panels) {
     PlotPanel& p = fig.AddPanel(pd.title, "ω_e √(L/g) [-]", pd.title + " " + pd.unit);
     p.y_include_zero = !pd.phase;
+    // One legend for the figure (the same curves and points in every panel).
+    if (&pd != &panels.front()) p.legend = LegendPlace::kNone;
     if (pd.phase) {
       p.y_min = -180;
       p.y_max = 180;
@@ -78,12 +80,14 @@ PlotFigure CoefficientsFigure(const std::vector<sk::CoefficientTable>& curves,
       }
       auto s = PlotSeries::Line(c < labels.size() ? labels[c] : "", x, y);
       s.color = palette[c % 4];
+      if (pd.phase) s.wrap_period = 360.0;
       p.series.push_back(s);
       if (pd.fk) {
         auto f = PlotSeries::Line("", x, yfk);
         f.color = palette[c % 4];
         f.dash = "6 3";
         f.line_width_px = 1.0;
+        if (pd.phase) f.wrap_period = 360.0;
         p.series.push_back(f);
       }
     }

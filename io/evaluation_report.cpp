@@ -198,6 +198,7 @@ std::vector<std::string> WriteEvaluationOutputs(const std::string& dir,
   const size_t ref = ReferenceSeaIndex(designs[0].evaluation.seas);
   write(AccelerationPerMetreFigure(designs, ref), "accel_per_m.svg");
   write(AccelerationPerMetreVsHsFigure(designs), "accel_per_m_vs_Hs.svg");
+  write(MsiAlongHullFigure(designs), "msi_positions.svg");
   write(MsiVsHsFigure(designs), "msi_vs_Hs.svg");
   for (const auto& [key, label] : report.plot_parameters) {
     bool any = false;

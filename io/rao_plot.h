@@ -9,10 +9,10 @@
 
 namespace hullopt::io {
 
-/// Measured RAO points to overlay (NaN phase = not measured).
+/// Measured RAO points to overlay, drawn against both ω_e [rad/s] and λ/L (NaN phase = not measured).
 struct MeasuredRao {
   std::string label;  ///< legend text, e.g. "tank, van 't Veer (1998)"
-  std::vector<double> lambda_over_L, heave_amp, heave_phase_deg, pitch_amp, pitch_phase_deg;
+  std::vector<double> omega_e_rad_s, lambda_over_L, heave_amp, heave_phase_deg, pitch_amp, pitch_phase_deg;
 };
 
 /// 8 panels: heave/pitch × magnitude/phase × (ω_e, λ/L). length_m [m] is the L of λ/L. Curves may be several

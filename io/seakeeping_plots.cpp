@@ -5,6 +5,8 @@
 #include <cmath>
 #include <cstdio>
 
+#include "io/design_variable_label.h"
+#include "io/rao_axis_labels.h"
 #include "seas/point_response.h"
 
 namespace hullopt::io {
@@ -40,6 +42,11 @@ std::vector<std::string> Groups(const std::vector<EvaluatedDesign>& designs) {
   for (const auto& d : designs)
     if (std::find(groups.begin(), groups.end(), d.group) == groups.end()) groups.push_back(d.group);
   return groups;
+}
+
+// "forward (x = 10.8 m)": a position with where it is.
+std::string PositionLabel(const sk::PositionResult& p) {
+  return (p.position == "lcg" ? std::string("LCG") : p.position) + " (x = " + Fmt(p.x_from_cg_m, "%.3g") + " m)";
 }
 
 std::string GroupTitle(const std::string& group, const std::string& what) {
@@ -91,17 +98,19 @@ PlotFigure RaoFigure(const std::vector<EvaluatedDesign>& designs) {
   double we_max = 0.0;
   for (const auto& d : designs)
     for (const auto& s : d.evaluation.seas) we_max = std::max(we_max, 2.5 * s.peak_omega_e_rad_s);
+  // Ending the axis on a tick: the next nice value above.
+  if (we_max > 0.0) we_max = NiceLinearTicks(0.0, we_max).back();
   fig.title = "Heave and pitch RAOs in head seas";
   fig.columns = 2;
   for (const auto& group : Groups(designs)) {
-    auto& heave = fig.AddPanel(GroupTitle(group, "Heave"), "encounter frequency ω_e [rad/s]", "|x3|/A [m/m]");
+    auto& heave = fig.AddPanel(GroupTitle(group, "Heave"), "encounter frequency ω_e [rad/s]", kHeaveRaoLabel);
     heave.legend = LegendPlace::kNone;
     heave.y_include_zero = true;
     if (we_max > 0.0) heave.x_min = 0.0, heave.x_max = we_max;
     PlotPanel pitch;
     pitch.title = GroupTitle(group, "Pitch");
     pitch.x_label = "encounter frequency ω_e [rad/s]";
-    pitch.y_label = "|x5|/(kA) [-]";
+    pitch.y_label = kPitchRaoLabel;
     pitch.legend = LegendPlace::kOutsideRight;
     pitch.y_include_zero = true;
     pitch.x_min = heave.x_min, pitch.x_max = heave.x_max;
@@ -159,18 +168,56 @@ PlotFigure AccelerationPerMetreVsHsFigure(const std::vector<EvaluatedDesign>& de
   fig.title = "Rms vertical acceleration per metre of wave height vs Hs";
   fig.panel_width_px = 380.0;
   fig.panel_height_px = 290.0;
-  const char* names[] = {"forward", "LCG", "transom"};
   for (size_t i = 0; i < designs.size(); ++i) {
     const auto& d = designs[i];
     auto& p = fig.AddPanel(Numbered(i, d), "Hs [m]", "σ_a / Hs [g/m]");
     p.y_include_zero = true;
-    std::vector<double> x, y[3];
-    for (const auto& s : d.evaluation.seas) {
-      x.push_back(s.sea.Hs_m);
-      for (int k = 0; k < 3; ++k) y[k].push_back(s.positions[k].rms_accel_g / s.sea.Hs_m);
+    if (d.evaluation.seas.empty()) continue;
+    const auto& positions = d.evaluation.seas[0].positions;
+    for (size_t k = 0; k < positions.size(); ++k) {
+      std::vector<double> x, y;
+      for (const auto& s : d.evaluation.seas) {
+        x.push_back(s.sea.Hs_m);
+        y.push_back(k < s.positions.size() ? s.positions[k].rms_accel_g / s.sea.Hs_m : NAN);
+      }
+      p.series.push_back(PlotSeries::LineMarkers(PositionLabel(positions[k]), x, y));
     }
-    for (int k = 0; k < 3; ++k) p.series.push_back(PlotSeries::LineMarkers(names[k], x, y[k]));
   }
+  fig.footnote = "x: position forward of the CG";
+  return fig;
+}
+
+PlotFigure MsiAlongHullFigure(const std::vector<EvaluatedDesign>& designs) {
+  PlotFigure fig;
+  fig.title = "Motion sickness incidence at each position along the hull";
+  fig.panel_width_px = 420.0;
+  fig.panel_height_px = 300.0;
+  for (size_t i = 0; i < designs.size(); ++i) {
+    const auto& d = designs[i];
+    auto& p = fig.AddPanel(Numbered(i, d), "position x forward of the CG [m]", "MSI [%]");
+    p.y_include_zero = true;
+    p.pad_fraction = 0.08;
+    const size_t ref = d.evaluation.seas.empty() ? 0 : ReferenceSeaIndex(d.evaluation.seas);
+    for (size_t k = 0; k < d.evaluation.seas.size(); ++k) {
+      const auto& s = d.evaluation.seas[k];
+      std::vector<const sk::PositionResult*> along;
+      for (const auto& r : s.positions) along.push_back(&r);
+      std::stable_sort(along.begin(), along.end(),
+                       [](const auto* a, const auto* b) { return a->x_from_cg_m < b->x_from_cg_m; });
+      std::vector<double> x, y;
+      std::vector<std::string> names;
+      for (const auto* r : along) {
+        x.push_back(r->x_from_cg_m);
+        y.push_back(r->msi_pct);
+        names.push_back(k == ref ? (r->position == "lcg" ? "LCG" : r->position) : "");
+      }
+      auto series = PlotSeries::LineMarkers(SeaLabel(s), x, y);
+      series.line_width_px = 1.0;
+      series.point_labels = names;
+      p.series.push_back(series);
+    }
+  }
+  fig.footnote = "Positions named in the sea of largest Hs; MSI as in msi.csv (model and exposure in summary.json)";
   return fig;
 }
 
@@ -199,7 +246,7 @@ PlotFigure MsiVsParameterFigure(const std::vector<EvaluatedDesign>& designs, con
   std::string sea_label = designs.empty() || sea >= designs[0].evaluation.seas.size()
                               ? ""
                               : SeaLabel(designs[0].evaluation.seas[sea]);
-  fig.title = "Mean MSI in " + sea_label + " vs " + parameter;
+  fig.title = "Mean MSI in " + sea_label + " vs " + DesignVariableName(parameter);
   fig.panel_width_px = 560.0;
   fig.panel_height_px = 380.0;
   auto& p = fig.AddPanel("", axis_label, "MSI [%]");

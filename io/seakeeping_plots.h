@@ -23,8 +23,12 @@ PlotFigure RaoFigure(const std::vector<EvaluatedDesign>& designs);
 /// Fig. 10: rms vertical acceleration per metre of Hs [g/m] at forward, LCG and transom for every design in
 /// sea `sea` (x = design number); a panel per group.
 PlotFigure AccelerationPerMetreFigure(const std::vector<EvaluatedDesign>& designs, size_t sea);
-/// Rms acceleration per metre of Hs [g/m] vs Hs at the three positions, a panel per design.
+/// Rms acceleration per metre of Hs [g/m] vs Hs at every position (forward, LCG, transom and the user's
+/// points, each named with its x in the legend), a panel per design.
 PlotFigure AccelerationPerMetreVsHsFigure(const std::vector<EvaluatedDesign>& designs);
+/// MSI [%] along the hull: at every position (named beside its marker) against its x from the CG [m], a line
+/// per sea, a panel per design.
+PlotFigure MsiAlongHullFigure(const std::vector<EvaluatedDesign>& designs);
 /// Fig. 11: mean MSI [%] vs Hs, a line per design, a panel per group.
 PlotFigure MsiVsHsFigure(const std::vector<EvaluatedDesign>& designs);
 /// Figs. 12–14: mean MSI [%] in sea `sea` vs designs[i].parameters[parameter]; designs without the parameter

@@ -221,35 +221,256 @@ double LegendWidth(const std::vector<LegendEntry>& entries) {
   return w + 46.0;
 }
 constexpr double kLegendRow = 16.0;
+// [px] free space a legend inside the plot area keeps around it from any drawn point or line.
+constexpr double kLegendClearance = 4.0;
 double LegendHeight(const std::vector<LegendEntry>& entries) { return entries.size() * kLegendRow + 8.0; }
 
-// Number of drawn points (and line samples) of the panel that fall inside a box: used to place the legend
-// where it hides the least.
-int CountInside(const PlotPanel& panel, const Axis& ax, const Axis& ay, double x0, double y0, double x1,
-                double y1) {
-  int count = 0;
-  auto inside = [&](double px, double py) { return px >= x0 && px <= x1 && py >= y0 && py <= y1; };
-  for (const auto& s : panel.series) {
-    const size_t n = std::min(s.x.size(), s.y.size());
-    bool have_prev = false;
-    double qx = 0, qy = 0;
-    for (size_t i = 0; i < n; ++i) {
-      if (!ax.Usable(s.x[i]) || !ay.Usable(s.y[i])) {
-        have_prev = false;
-        continue;
-      }
-      const double px = ax.Map(s.x[i]), py = ay.Map(s.y[i]);
-      count += inside(px, py) ? 3 : 0;
-      if (s.line && have_prev) {
-        for (int j = 1; j < 8; ++j) {
-          const double t = j / 8.0;
-          count += inside(qx + t * (px - qx), qy + t * (py - qy));
-        }
-      }
-      qx = px, qy = py, have_prev = true;
+// A rectangle in pixels.
+struct Box {
+  double x0, y0, x1, y1;
+  bool Contains(double x, double y) const { return x >= x0 && x <= x1 && y >= y0 && y <= y1; }
+  bool Intersects(const Box& b) const { return x0 <= b.x1 && b.x0 <= x1 && y0 <= b.y1 && b.y0 <= y1; }
+};
+
+struct Point {
+  double x, y;
+};
+
+// Liang–Barsky: cuts the segment a–b to the box; false when no part of it lies inside.
+bool ClipSegment(const Box& box, Point* a, Point* b) {
+  const double dx = b->x - a->x, dy = b->y - a->y;
+  double t0 = 0.0, t1 = 1.0;
+  const double p[4] = {-dx, dx, -dy, dy};
+  const double q[4] = {a->x - box.x0, box.x1 - a->x, a->y - box.y0, box.y1 - a->y};
+  for (int i = 0; i < 4; ++i) {
+    if (p[i] == 0.0) {
+      if (q[i] < 0.0) return false;
+      continue;
+    }
+    const double t = q[i] / p[i];
+    if (p[i] < 0.0) {
+      if (t > t1) return false;
+      t0 = std::max(t0, t);
+    } else {
+      if (t < t0) return false;
+      t1 = std::min(t1, t);
     }
   }
+  const Point a0 = *a;
+  *a = {a0.x + t0 * dx, a0.y + t0 * dy};
+  *b = {a0.x + t1 * dx, a0.y + t1 * dy};
+  return true;
+}
+
+// The line of a series in pixels, as runs of joined points cut to the plot area: a run ends at a skipped point,
+// where the line leaves the area and at a wrap of a periodic series (drawn out to the edge and in again).
+std::vector<std::vector<Point>> LineRuns(const PlotSeries& s, const Axis& ax, const Axis& ay, const Box& area) {
+  std::vector<std::vector<Point>> runs;
+  const size_t n = std::min(s.x.size(), s.y.size());
+  const bool wraps = s.wrap_period > 0.0 && ay.scale == AxisScale::kLinear;
+  bool open = false;  // the last run ends where the next segment may continue
+  auto add = [&](double xa, double ya, double xb, double yb) {
+    Point a{ax.Map(xa), ay.Map(ya)}, b{ax.Map(xb), ay.Map(yb)};
+    if (!ClipSegment(area, &a, &b)) {
+      open = false;
+      return;
+    }
+    if (open && !runs.empty() && std::abs(runs.back().back().x - a.x) < 1e-6 &&
+        std::abs(runs.back().back().y - a.y) < 1e-6) {
+      runs.back().push_back(b);
+    } else {
+      runs.push_back({a, b});
+    }
+    // Continue only if the segment ended at its own end point (not cut at the edge).
+    open = std::abs(b.x - ax.Map(xb)) < 1e-6 && std::abs(b.y - ay.Map(yb)) < 1e-6;
+  };
+  bool have_prev = false;
+  double px = 0, py = 0;
+  for (size_t k = 0; k < n; ++k) {
+    if (!ax.Usable(s.x[k]) || !ay.Usable(s.y[k])) {
+      have_prev = false, open = false;
+      continue;
+    }
+    const double x = s.x[k], y = s.y[k];
+    if (have_prev) {
+      const double turns = wraps ? std::round((y - py) / s.wrap_period) : 0.0;
+      if (turns != 0.0) {
+        add(px, py, x, y - turns * s.wrap_period);  // out through one edge ...
+        open = false;
+        add(px, py + turns * s.wrap_period, x, y);  // ... and in through the other
+      } else {
+        add(px, py, x, y);
+      }
+    }
+    px = x, py = y, have_prev = true;
+  }
+  return runs;
+}
+
+// Markers drawn: only points inside the axis ranges.
+std::vector<std::pair<size_t, Point>> MarkerPoints(const PlotSeries& s, const Axis& ax, const Axis& ay,
+                                                   const Box& area) {
+  std::vector<std::pair<size_t, Point>> pts;
+  const size_t n = std::min(s.x.size(), s.y.size());
+  const double tol = 0.01;  // [px] round-off of the edge ticks
+  const Box grown{area.x0 - tol, area.y0 - tol, area.x1 + tol, area.y1 + tol};
+  for (size_t k = 0; k < n; ++k) {
+    if (!ax.Usable(s.x[k]) || !ay.Usable(s.y[k])) continue;
+    const Point p{ax.Map(s.x[k]), ay.Map(s.y[k])};
+    if (grown.Contains(p.x, p.y)) pts.push_back({k, p});
+  }
+  return pts;
+}
+
+// A point label: text (10 px font) beside its marker, above-right unless that leaves the plot area or
+// overlaps a label placed before, then below-right, above-left, below-left.
+struct PointLabel {
+  double x, y;  // baseline start
+  std::string text;
+  Box box;
+};
+
+std::vector<PointLabel> PlacePointLabels(const PlotPanel& panel, const Axis& ax, const Axis& ay, const Box& area) {
+  std::vector<PointLabel> placed;
+  for (const auto& s : panel.series)
+    for (const auto& [k, p] : MarkerPoints(s, ax, ay, area)) {
+      if (k >= s.point_labels.size() || s.point_labels[k].empty()) continue;
+      const std::string& text = s.point_labels[k];
+      const double w = TextWidth(text, 10.0);
+      const Point offsets[] = {{6.0, -6.0}, {6.0, 14.0}, {-6.0 - w, -6.0}, {-6.0 - w, 14.0}};
+      PointLabel best{};
+      for (int c = 0; c < 4; ++c) {
+        const double bx = p.x + offsets[c].x, by = p.y + offsets[c].y;
+        PointLabel l{bx, by, text, {bx, by - 10.0, bx + w, by + 2.0}};
+        if (c == 0) best = l;
+        // Inside the plot area (widened as the markers' clip path), clear of the labels placed before.
+        bool free = l.box.x0 >= area.x0 - 6.0 && l.box.x1 <= area.x1 + 6.0 && l.box.y0 >= area.y0 - 6.0 &&
+                    l.box.y1 <= area.y1 + 6.0;
+        for (const auto& q : placed) free = free && !q.box.Intersects(l.box);
+        if (free) {
+          best = l;
+          break;
+        }
+      }
+      placed.push_back(best);
+    }
+  return placed;
+}
+
+// How many drawn items (line segments, markers, point labels) of the panel a box covers.
+int CountCovered(const PlotPanel& panel, const Axis& ax, const Axis& ay, const Box& area, const Box& box) {
+  int count = 0;
+  for (const auto& s : panel.series) {
+    if (s.line)
+      for (const auto& run : LineRuns(s, ax, ay, area))
+        for (size_t i = 1; i < run.size(); ++i) {
+          Point a = run[i - 1], b = run[i];
+          count += ClipSegment(box, &a, &b);
+        }
+    for (const auto& kp : MarkerPoints(s, ax, ay, area)) {
+      const Point& p = kp.second;
+      const double r = s.markers ? 0.5 * s.marker_size_px : 0.0;
+      if (s.markers && box.Intersects({p.x - r, p.y - r, p.x + r, p.y + r})) ++count;
+    }
+  }
+  for (const auto& l : PlacePointLabels(panel, ax, ay, area)) count += box.Intersects(l.box);
   return count;
+}
+
+// Where a panel's plot area, axes and legend go within its cell.
+struct PanelLayout {
+  double left = 0, top = 0, right = 0, bottom = 0;
+  Axis ax, ay;
+  std::vector<LegendEntry> legend;
+  bool legend_shown = false, legend_outside = false;
+  double legend_x = 0, legend_y = 0, legend_w = 0, legend_h = 0;
+  Box Area() const { return {left, top, right, bottom}; }
+};
+
+// outside: the legend goes outside whatever the data (the figure's column was widened for it).
+PanelLayout LayoutPanel(const PlotPanel& panel, double cx, double cy, double w, double h, bool outside = false) {
+  PanelLayout L;
+  // Data ranges.
+  const bool xlog = panel.x_scale == AxisScale::kLog, ylog = panel.y_scale == AxisScale::kLog;
+  double xlo = kNaN, xhi = kNaN, ylo = kNaN, yhi = kNaN;
+  for (const auto& s : panel.series) {
+    const size_t n = std::min(s.x.size(), s.y.size());
+    for (size_t i = 0; i < n; ++i) {
+      const double x = s.x[i], y = s.y[i];
+      if (!std::isfinite(x) || !std::isfinite(y) || (xlog && x <= 0) || (ylog && y <= 0)) continue;
+      ExtendRange(x, &xlo, &xhi);
+      ExtendRange(y, &ylo, &yhi);
+    }
+  }
+  for (const auto& b : panel.bands) {
+    if (std::isfinite(b.y_low) && (!ylog || b.y_low > 0)) ExtendRange(b.y_low, &ylo, &yhi);
+    if (std::isfinite(b.y_high) && (!ylog || b.y_high > 0)) ExtendRange(b.y_high, &ylo, &yhi);
+  }
+  for (size_t i = 0; i < panel.series.size(); ++i) {
+    const auto& s = panel.series[i];
+    if (!s.label.empty()) L.legend.push_back({s.label, false, &s, SeriesStyle(s, static_cast<int>(i)), ""});
+  }
+  for (const auto& b : panel.bands)
+    if (!b.label.empty()) L.legend.push_back({b.label, true, nullptr, {}, b.color});
+  L.legend_shown = !L.legend.empty() && panel.legend != LegendPlace::kNone;
+  L.legend_w = LegendWidth(L.legend), L.legend_h = LegendHeight(L.legend);
+
+  L.left = cx + kMarginLeft, L.top = cy + kMarginTop, L.bottom = cy + h - kMarginBottom;
+  L.right = cx + w - kMarginRight;
+  auto& ax = L.ax;
+  auto& ay = L.ay;
+  BuildAxis(&ax, panel.x_scale, xlo, xhi, panel.x_min, panel.x_max, false, panel.pad_fraction);
+  if (!panel.x_ticks.empty()) {
+    ax.ticks.clear();
+    for (size_t i = 0; i < panel.x_ticks.size(); ++i) {
+      const double t = panel.x_ticks[i];
+      if (!ax.Usable(t) || t < std::min(ax.lo, ax.hi) || t > std::max(ax.lo, ax.hi)) continue;
+      char buf[32];
+      std::snprintf(buf, sizeof buf, "%g", t);
+      ax.ticks.push_back({t, i < panel.x_tick_labels.size() ? Escape(panel.x_tick_labels[i]) : buf});
+    }
+  }
+  BuildAxis(&ay, panel.y_scale, ylo, yhi, panel.y_min, panel.y_max, panel.y_include_zero, panel.pad_fraction);
+  ax.p0 = L.left, ax.p1 = L.right;
+  ay.p0 = L.bottom, ay.p1 = L.top;
+  if (!L.legend_shown) return L;
+
+  // Inside the plot area where it covers nothing, else outside on the right.
+  L.legend_outside = outside || panel.legend == LegendPlace::kOutsideRight;
+  if (!L.legend_outside) {
+    const double inset = 8.0, lw = L.legend_w, lh = L.legend_h;
+    struct Candidate {
+      LegendPlace place;
+      double x, y;
+    };
+    std::vector<Candidate> candidates = {
+        {LegendPlace::kTopRight, L.right - inset - lw, L.top + inset},
+        {LegendPlace::kTopLeft, L.left + inset, L.top + inset},
+        {LegendPlace::kBottomRight, L.right - inset - lw, L.bottom - inset - lh},
+        {LegendPlace::kBottomLeft, L.left + inset, L.bottom - inset - lh},
+        {LegendPlace::kAuto, 0.5 * (L.left + L.right - lw), L.top + inset},
+        {LegendPlace::kAuto, 0.5 * (L.left + L.right - lw), L.bottom - inset - lh}};
+    std::stable_partition(candidates.begin(), candidates.end(),
+                          [&](const Candidate& c) { return c.place == panel.legend; });
+    bool found = false;
+    for (const auto& c : candidates) {
+      const Box box{c.x, c.y, c.x + lw, c.y + lh};
+      if (c.x < L.left || c.y < L.top || box.x1 > L.right || box.y1 > L.bottom) continue;  // does not fit
+      const Box clear{box.x0 - kLegendClearance, box.y0 - kLegendClearance, box.x1 + kLegendClearance,
+                      box.y1 + kLegendClearance};
+      if (CountCovered(panel, ax, ay, L.Area(), clear) == 0) {
+        L.legend_x = c.x, L.legend_y = c.y, found = true;
+        break;
+      }
+    }
+    L.legend_outside = !found;
+  }
+  if (L.legend_outside) {
+    L.right -= L.legend_w + 10.0;
+    ax.p1 = L.right;
+    L.legend_x = L.right + 10.0, L.legend_y = L.top;
+  }
+  return L;
 }
 
 void DrawLegendSample(std::ostringstream& o, const LegendEntry& e, double x, double y) {
@@ -269,53 +490,14 @@ void DrawLegendSample(std::ostringstream& o, const LegendEntry& e, double x, dou
   if (s.markers) o << Marker(s.marker, x + 13, y, s.marker_size_px, e.style.color, s.hollow_markers);
 }
 
+
 void DrawPanel(std::ostringstream& o, const PlotPanel& panel, int panel_index, double cx, double cy, double w,
-               double h) {
-  // Data ranges.
-  const bool xlog = panel.x_scale == AxisScale::kLog, ylog = panel.y_scale == AxisScale::kLog;
-  double xlo = kNaN, xhi = kNaN, ylo = kNaN, yhi = kNaN;
-  for (const auto& s : panel.series) {
-    const size_t n = std::min(s.x.size(), s.y.size());
-    for (size_t i = 0; i < n; ++i) {
-      const double x = s.x[i], y = s.y[i];
-      if (!std::isfinite(x) || !std::isfinite(y) || (xlog && x <= 0) || (ylog && y <= 0)) continue;
-      ExtendRange(x, &xlo, &xhi);
-      ExtendRange(y, &ylo, &yhi);
-    }
-  }
-  for (const auto& b : panel.bands) {
-    if (std::isfinite(b.y_low) && (!ylog || b.y_low > 0)) ExtendRange(b.y_low, &ylo, &yhi);
-    if (std::isfinite(b.y_high) && (!ylog || b.y_high > 0)) ExtendRange(b.y_high, &ylo, &yhi);
-  }
-
-  // Legend entries and the space an outside legend takes.
-  std::vector<LegendEntry> legend;
-  for (size_t i = 0; i < panel.series.size(); ++i) {
-    const auto& s = panel.series[i];
-    if (!s.label.empty()) legend.push_back({s.label, false, &s, SeriesStyle(s, static_cast<int>(i)), ""});
-  }
-  for (const auto& b : panel.bands)
-    if (!b.label.empty()) legend.push_back({b.label, true, nullptr, {}, b.color});
-  const bool outside = panel.legend == LegendPlace::kOutsideRight && !legend.empty();
-  const double legend_w = LegendWidth(legend), legend_h = LegendHeight(legend);
-
-  const double left = cx + kMarginLeft, top = cy + kMarginTop, bottom = cy + h - kMarginBottom;
-  const double right = cx + w - kMarginRight - (outside ? legend_w + 10.0 : 0.0);
-  Axis ax, ay;
-  BuildAxis(&ax, panel.x_scale, xlo, xhi, panel.x_min, panel.x_max, false, panel.pad_fraction);
-  if (!panel.x_ticks.empty()) {
-    ax.ticks.clear();
-    for (size_t i = 0; i < panel.x_ticks.size(); ++i) {
-      const double t = panel.x_ticks[i];
-      if (!ax.Usable(t) || t < std::min(ax.lo, ax.hi) || t > std::max(ax.lo, ax.hi)) continue;
-      char buf[32];
-      std::snprintf(buf, sizeof buf, "%g", t);
-      ax.ticks.push_back({t, i < panel.x_tick_labels.size() ? Escape(panel.x_tick_labels[i]) : buf});
-    }
-  }
-  BuildAxis(&ay, panel.y_scale, ylo, yhi, panel.y_min, panel.y_max, panel.y_include_zero, panel.pad_fraction);
-  ax.p0 = left, ax.p1 = right;
-  ay.p0 = bottom, ay.p1 = top;
+               double h, bool legend_outside) {
+  const PanelLayout L = LayoutPanel(panel, cx, cy, w, h, legend_outside);
+  const double left = L.left, top = L.top, right = L.right, bottom = L.bottom;
+  const Axis& ax = L.ax;
+  const Axis& ay = L.ay;
+  const Box area = L.Area();
 
   o << "<g class=\"panel\">\n";
   // Title.
@@ -361,12 +543,15 @@ void DrawPanel(std::ostringstream& o, const PlotPanel& panel, int panel_index, d
       << ")\">" << Escape(panel.y_label) << "</text>\n";
   }
 
-  // Data, clipped to the plot area (widened by a marker so edge markers stay whole).
+  // Data. Lines are cut to the plot area and clipped to it; markers (only those inside the ranges) are clipped
+  // to the area widened by half a marker so that edge markers stay whole.
   const std::string clip = "clip" + std::to_string(panel_index);
-  o << "<clipPath id=\"" << clip << "\"><rect x=\"" << Num(left - 6) << "\" y=\"" << Num(top - 6)
+  o << "<clipPath id=\"" << clip << "\"><rect x=\"" << Num(left) << "\" y=\"" << Num(top) << "\" width=\""
+    << Num(right - left) << "\" height=\"" << Num(bottom - top) << "\"/></clipPath>\n";
+  o << "<clipPath id=\"" << clip << "m\"><rect x=\"" << Num(left - 6) << "\" y=\"" << Num(top - 6)
     << "\" width=\"" << Num(right - left + 12) << "\" height=\"" << Num(bottom - top + 12)
     << "\"/></clipPath>\n";
-  o << "<g clip-path=\"url(#" << clip << ")\">\n";
+  o << "<g class=\"data\">\n<g clip-path=\"url(#" << clip << ")\">\n";
   for (const auto& b : panel.bands) {
     if (!ay.Usable(b.y_low) || !ay.Usable(b.y_high)) continue;
     const double y0 = ay.Map(std::max(b.y_low, ay.lo)), y1 = ay.Map(std::min(b.y_high, ay.hi));
@@ -376,75 +561,47 @@ void DrawPanel(std::ostringstream& o, const PlotPanel& panel, int panel_index, d
   }
   for (size_t i = 0; i < panel.series.size(); ++i) {
     const auto& s = panel.series[i];
+    if (!s.line) continue;
     const Style st = SeriesStyle(s, static_cast<int>(i));
-    const size_t n = std::min(s.x.size(), s.y.size());
-    if (s.line) {
-      std::ostringstream d;
-      bool pen_down = false;
-      for (size_t k = 0; k < n; ++k) {
-        if (!ax.Usable(s.x[k]) || !ay.Usable(s.y[k])) {
-          pen_down = false;
-          continue;
-        }
-        d << (pen_down ? "L" : "M") << Num(ax.Map(s.x[k])) << " " << Num(ay.Map(s.y[k]));
-        pen_down = true;
-      }
-      if (!d.str().empty()) {
-        o << "<path d=\"" << d.str() << "\" fill=\"none\" stroke=\"" << st.color << "\" stroke-width=\""
-          << Num(s.line_width_px) << "\" stroke-linejoin=\"round\" stroke-linecap=\"round\"";
-        if (!st.dash.empty()) o << " stroke-dasharray=\"" << st.dash << "\"";
-        o << "/>\n";
-      }
-    }
-    for (size_t k = 0; k < n; ++k) {
-      if (!ax.Usable(s.x[k]) || !ay.Usable(s.y[k])) continue;
-      const double px = ax.Map(s.x[k]), py = ay.Map(s.y[k]);
-      if (s.markers) o << Marker(s.marker, px, py, s.marker_size_px, st.color, s.hollow_markers);
-      if (k < s.point_labels.size() && !s.point_labels[k].empty())
-        o << "<text x=\"" << Num(px + 6) << "\" y=\"" << Num(py - 6) << "\" font-size=\"10\" fill=\"#333\">"
-          << Escape(s.point_labels[k]) << "</text>";
-    }
+    std::ostringstream d;
+    for (const auto& run : LineRuns(s, ax, ay, area))
+      for (size_t k = 0; k < run.size(); ++k) d << (k ? "L" : "M") << Num(run[k].x) << " " << Num(run[k].y);
+    if (d.str().empty()) continue;
+    o << "<path d=\"" << d.str() << "\" fill=\"none\" stroke=\"" << st.color << "\" stroke-width=\""
+      << Num(s.line_width_px) << "\" stroke-linejoin=\"round\" stroke-linecap=\"round\"";
+    if (!st.dash.empty()) o << " stroke-dasharray=\"" << st.dash << "\"";
+    o << "/>\n";
+  }
+  o << "</g>\n<g clip-path=\"url(#" << clip << "m)\">\n";
+  for (size_t i = 0; i < panel.series.size(); ++i) {
+    const auto& s = panel.series[i];
+    const Style st = SeriesStyle(s, static_cast<int>(i));
+    if (s.markers)
+      for (const auto& kp : MarkerPoints(s, ax, ay, area))
+        o << Marker(s.marker, kp.second.x, kp.second.y, s.marker_size_px, st.color, s.hollow_markers);
     o << "\n";
   }
-  o << "</g>\n";
+  for (const auto& l : PlacePointLabels(panel, ax, ay, area))
+    o << "<text class=\"point-label\" x=\"" << Num(l.x) << "\" y=\"" << Num(l.y)
+      << "\" font-size=\"10\" fill=\"#333\">" << Escape(l.text) << "</text>";
+  o << "\n";
+  o << "</g>\n</g>\n";
   // Frame over the data.
-  o << "<rect x=\"" << Num(left) << "\" y=\"" << Num(top) << "\" width=\"" << Num(right - left)
+  o << "<rect class=\"frame\" x=\"" << Num(left) << "\" y=\"" << Num(top) << "\" width=\"" << Num(right - left)
     << "\" height=\"" << Num(bottom - top) << "\" fill=\"none\" stroke=\"#555\" stroke-width=\"1\"/>\n";
 
   // Legend.
-  if (!legend.empty() && panel.legend != LegendPlace::kNone) {
-    const double inset = 8.0;
-    double lx = 0, ly = 0;
-    if (outside) {
-      lx = right + 10.0, ly = top;
-    } else {
-      struct Corner {
-        LegendPlace place;
-        double x, y;
-      };
-      const Corner corners[] = {
-          {LegendPlace::kTopRight, right - inset - legend_w, top + inset},
-          {LegendPlace::kTopLeft, left + inset, top + inset},
-          {LegendPlace::kBottomRight, right - inset - legend_w, bottom - inset - legend_h},
-          {LegendPlace::kBottomLeft, left + inset, bottom - inset - legend_h}};
-      int best = -1, best_count = 0;
-      for (int c = 0; c < 4; ++c) {
-        if (panel.legend != LegendPlace::kAuto && panel.legend != corners[c].place) continue;
-        const int count = CountInside(panel, ax, ay, corners[c].x, corners[c].y, corners[c].x + legend_w,
-                                      corners[c].y + legend_h);
-        if (best < 0 || count < best_count) best = c, best_count = count;
-      }
-      lx = corners[best].x, ly = corners[best].y;
-    }
+  if (L.legend_shown) {
+    const double lx = L.legend_x, ly = L.legend_y;
     o << "<g class=\"legend\">";
-    o << "<rect x=\"" << Num(lx) << "\" y=\"" << Num(ly) << "\" width=\"" << Num(legend_w) << "\" height=\""
-      << Num(legend_h) << "\" fill=\"#ffffff\" fill-opacity=\"0.88\" stroke=\"#bbbbbb\" stroke-width=\"0.8\""
+    o << "<rect x=\"" << Num(lx) << "\" y=\"" << Num(ly) << "\" width=\"" << Num(L.legend_w) << "\" height=\""
+      << Num(L.legend_h) << "\" fill=\"#ffffff\" fill-opacity=\"0.88\" stroke=\"#bbbbbb\" stroke-width=\"0.8\""
       << " rx=\"3\"/>\n";
-    for (size_t i = 0; i < legend.size(); ++i) {
+    for (size_t i = 0; i < L.legend.size(); ++i) {
       const double ey = ly + 4.0 + kLegendRow * (i + 0.5);
-      DrawLegendSample(o, legend[i], lx + 8, ey);
+      DrawLegendSample(o, L.legend[i], lx + 8, ey);
       o << "<text x=\"" << Num(lx + 40) << "\" y=\"" << Num(ey + 4) << "\" font-size=\"" << kLegendFont
-        << "\" fill=\"#222\">" << Escape(legend[i].label) << "</text>\n";
+        << "\" fill=\"#222\">" << Escape(L.legend[i].label) << "</text>\n";
     }
     o << "</g>\n";
   }
@@ -518,24 +675,24 @@ std::string RenderSvg(const PlotFigure& figure) {
   int cols = figure.columns > 0 ? figure.columns : (n <= 3 ? n : (n == 4 ? 2 : 3));
   cols = std::min(cols, n);
   const int rows = (n + cols - 1) / cols;
-  // Cells get wider if any panel puts its legend outside.
-  double extra = 0.0;
-  for (const auto& p : figure.panels) {
-    if (p.legend != LegendPlace::kOutsideRight) continue;
-    std::vector<LegendEntry> entries;
-    for (const auto& s : p.series)
-      if (!s.label.empty()) entries.push_back({s.label, false, &s, {}, ""});
-    for (const auto& b : p.bands)
-      if (!b.label.empty()) entries.push_back({b.label, true, nullptr, {}, b.color});
-    if (!entries.empty()) extra = std::max(extra, LegendWidth(entries) + 10.0);
+  // A column gets wider if one of its panels puts its legend outside (asked for, or no free place inside).
+  std::vector<double> col_w(cols, figure.panel_width_px), col_x(cols + 1, 5.0);
+  std::vector<bool> outside(figure.panels.size(), false);
+  for (size_t i = 0; i < figure.panels.size(); ++i) {
+    const PanelLayout L =
+        LayoutPanel(figure.panels[i], 0.0, 0.0, figure.panel_width_px, figure.panel_height_px);
+    const int c = static_cast<int>(i) % cols;
+    outside[i] = L.legend_outside;
+    if (L.legend_outside) col_w[c] = std::max(col_w[c], figure.panel_width_px + L.legend_w + 10.0);
   }
-  const double cell_w = figure.panel_width_px + extra, cell_h = figure.panel_height_px;
+  for (int c = 0; c < cols; ++c) col_x[c + 1] = col_x[c] + col_w[c];
+  const double cell_h = figure.panel_height_px;
   const double title_h = figure.title.empty() ? 6.0 : 34.0;
   const double foot_h = figure.footnote.empty() ? 6.0 : 24.0;
   // Wide enough for the titles (bold glyphs ~8 % wider than the layout estimate).
   const double title_w = 1.08 * TextWidth(figure.title, kFigureTitleFont) + 40.0;
   const double foot_w = TextWidth(figure.footnote, 10.0) + 30.0;
-  const double width = std::max({cols * cell_w + 10.0, title_w, foot_w});
+  const double width = std::max({col_x[cols] + 5.0, title_w, foot_w});
   const double height = title_h + rows * cell_h + foot_h;
 
   std::ostringstream o;
@@ -549,8 +706,9 @@ std::string RenderSvg(const PlotFigure& figure) {
       << "</text>\n";
   for (size_t i = 0; i < figure.panels.size(); ++i) {
     const int r = static_cast<int>(i) / cols, c = static_cast<int>(i) % cols;
-    DrawPanel(o, figure.panels[i], static_cast<int>(i), 5.0 + c * cell_w, title_h + r * cell_h, cell_w,
-              cell_h);
+    // A panel with its legend inside keeps the common width in a widened column (equal plot areas).
+    DrawPanel(o, figure.panels[i], static_cast<int>(i), col_x[c], title_h + r * cell_h,
+              outside[i] ? col_w[c] : figure.panel_width_px, cell_h, outside[i]);
   }
   if (!figure.footnote.empty())
     o << "<text x=\"12\" y=\"" << Num(height - 8) << "\" font-size=\"10\" fill=\"#666\">"

@@ -10,7 +10,10 @@
 //   io::PlotPanel& p = fig.AddPanel("Hs 3 m, Tz 7.5 s", "ω_e [rad/s]", "S(ω_e) [m²s/rad]");
 //   p.series.push_back(io::PlotSeries::Line("JONSWAP γ=3.3", w, s));
 //   io::WriteSvg(fig, "spectra.svg");
-// Non-finite points (and non-positive ones on a log axis) are skipped and break the line there.
+// Non-finite points (and non-positive ones on a log axis) are skipped and break the line there. Lines are cut
+// at the plot area's edges (and clipped by an SVG clipPath as well); markers outside the axis ranges are not
+// drawn. The data of a panel are in <g class="data">, its legend in <g class="legend">, its plot area is the
+// <rect class="frame">.
 #include <string>
 #include <vector>
 
@@ -18,6 +21,8 @@ namespace hullopt::io {
 
 enum class AxisScale { kLinear, kLog };
 enum class MarkerShape { kCircle, kSquare, kTriangle, kDiamond, kCross, kPlus };
+/// kAuto: the first of the corners (and top/bottom centre) where the legend box covers no drawn point or line,
+/// else outside the plot area on the right. A named corner is tried first, with the same fallback.
 enum class LegendPlace { kAuto, kTopRight, kTopLeft, kBottomRight, kBottomLeft, kOutsideRight, kNone };
 
 struct PlotSeries {
@@ -32,6 +37,10 @@ struct PlotSeries {
   double marker_size_px = 7.0;
   bool hollow_markers = false;            ///< open markers (white fill), e.g. for measured data
   std::vector<std::string> point_labels;  ///< optional text beside each point (same length as x or empty)
+  /// > 0: y is periodic with this period (360 for a phase in degrees). Where consecutive values jump by more
+  /// than half a period the line runs out of the plot area to the wrap and in again from the other edge,
+  /// instead of a vertical stroke across the panel.
+  double wrap_period = 0.0;
 
   static PlotSeries Line(std::string label, std::vector<double> x, std::vector<double> y);
   static PlotSeries Markers(std::string label, std::vector<double> x, std::vector<double> y);

@@ -1,6 +1,7 @@
 #pragma once
 // Reading measured head-sea RAOs (docs/file-formats.md, tank RAO CSV): a header with at least `Fn`, either
-// `omega_e_rad_s` or `lambda_over_L` (or both), `heave_rao` (|x3|/A [m/m]) and `pitch_rao` (|x5|/(kA) [-]);
+// `omega_e_rad_s` or `lambda_over_L` (or both), `heave_rao` (|x3|/A [m/m]) and `pitch_rao`
+// (|x5|/(kA) [rad/rad]);
 // optional `heave_phase_deg` and `pitch_phase_deg` (lead positive, relative to the wave crest at the CG; an
 // empty cell means "not measured"). Other columns are ignored; blank lines and lines starting with '#' are
 // skipped.

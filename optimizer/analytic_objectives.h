@@ -40,7 +40,7 @@ class AnalyticEvaluator : public Evaluator {
   /// Any name works for the functions; the test objectives still refuse names outside x1..x16 and a..z, so
   /// that the "unknown variable" check of campaigns can be exercised without the hull generator.
   std::vector<std::string> VariableNames() const override;
-  std::string ObjectiveLabel() const override { return options_.function + " (analytic test objective)"; }
+  std::string ObjectiveLabel() const override { return options_.function + " (analytic test objective) [-]"; }
   /// The function at x (no delay, no refusal).
   double ObjectiveImplied(const std::vector<double>& x, const std::vector<double>& sea_values) const override;
 

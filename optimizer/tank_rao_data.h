@@ -15,7 +15,7 @@ struct TankRaoPoint {
   bool has_lambda_over_L = false;  ///< the file gives the wave length ratio
   double lambda_over_L = 0.0;      ///< [-] wave length over ship length (when has_lambda_over_L)
   double heave_amp = 0.0;          ///< [m/m] |x3|/A
-  double pitch_amp = 0.0;          ///< [-] |x5|/(kA)
+  double pitch_amp = 0.0;          ///< [rad/rad] |x5|/(kA)
   bool has_heave_phase = false;
   double heave_phase_deg = 0.0;  ///< [deg] phase of x3, lead positive
   bool has_pitch_phase = false;

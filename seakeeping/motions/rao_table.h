@@ -18,7 +18,7 @@ struct RaoTable {
   std::vector<double> omega_rad_s;           ///< [rad/s] wave frequency ω, increasing
   std::vector<double> omega_e_rad_s;         ///< [rad/s] encounter frequency ω_e = ω + ω²U/g
   std::vector<std::complex<double>> heave;   ///< X3/A [m/m]
-  std::vector<std::complex<double>> pitch;   ///< X5/(kA) [-]
+  std::vector<std::complex<double>> pitch;   ///< X5/(kA) [rad/rad]: pitch per wave slope amplitude
   /// Numerical warnings of the solve (rule and numbers), e.g. near-singular strip sections; empty when none.
   std::vector<std::string> warnings;
 };

@@ -29,6 +29,10 @@ sed -e 's/samples: [0-9]*/samples: 6/' configs/optimize-catamaran.yaml > "$work/
 [ "$(wc -l < "$work/x1/samples.csv")" -eq 7 ] || fail "explore: expected 6 samples"
 diff <(strip "$work/x1/samples.csv") <(strip "$work/x2/samples.csv") > /dev/null || fail "explore: 1 and 2 threads differ"
 echo "ok: samples.csv of the MSI campaign identical with 1 and 2 threads"
+# The plots name the objective with its unit and the design variables readably.
+grep -q 'mean MSI over 2 seas \[%\]' "$work/x1/scatter.svg" || fail "scatter.svg: objective label without unit"
+grep -q 'LCF \[% L\]' "$work/x1/scatter.svg" || fail "scatter.svg: LCF label"
+grep -q 'LCF_pct_L' "$work/x1/scatter.svg" && fail "scatter.svg: raw key LCF_pct_L"
 
 # Kill/resume on the real objective (the analytic-objective version with more kill points is
 # optimize_kill_resume.sh): SIGKILL at a random moment, restart with the same command, same history as t1.

@@ -73,4 +73,17 @@ expect_error lifted_out "$(base "{ Fn: 0.75 }" "{ omega_rad_s: [2.0] }" |
   sed 's/spacing_m: 0.70 }/spacing_m: 0.70, attitude: { sinkage_m: -0.02 } }/')" "hull.attitude.*lifted out"
 expect_error big_trim "$(base "{ Fn: 0.75 }" "{ omega_rad_s: [2.0] }" |
   sed 's/spacing_m: 0.70 }/spacing_m: 0.70, attitude: { trim_deg: 7 } }/')" "hull.attitude.trim_deg"
+# compare.tank_rao_csv: measured points on rao.svg, the file named relative to the config's folder (run from
+# another working directory); a file without a row at the run's Fn is refused naming its speeds.
+mkdir -p "$tmp/cmp/data"
+cp data/delft372/delft372_tank_rao_fn075.csv "$tmp/cmp/data/tank.csv"
+sed "s|data/delft372/delft372_offsets.csv|$PWD/data/delft372/delft372_offsets.csv|" "$tmp/ok.yaml" > "$tmp/cmp/rao.yaml"
+printf 'compare: { tank_rao_csv: data/tank.csv, label: "tank Fn 0.75" }\n' >> "$tmp/cmp/rao.yaml"
+(cd / && "$bin" rao "$tmp/cmp/rao.yaml" --out "$tmp/cmp/out" > "$tmp/cmp/log") || fail "compare: refused"
+grep -q "measured points drawn: 13" "$tmp/cmp/log" || fail "compare: $(cat "$tmp/cmp/log")"
+grep -q "tank Fn 0.75" "$tmp/cmp/out/rao.svg" || fail "compare: no measured series in rao.svg"
+[ "$(grep -o 'fill="#ffffff" stroke="#000000"' "$tmp/cmp/out/rao.svg" | wc -l)" -ge $((8 * 13 - 8)) ] ||
+  fail "compare: measured markers missing from rao.svg"
+expect_error compare_other_speed "$(sed 's/Fn: 0.75/Fn: 0.5/' "$tmp/cmp/rao.yaml" |
+  sed "s|data/tank.csv|$tmp/cmp/data/tank.csv|")" "compare.tank_rao_csv.*no row at the run's Fn 0.5 (rows at Fn 0.75)"
 echo "rao CLI: all checks passed"

@@ -181,9 +181,10 @@ TEST_CASE("a multi-panel figure is well-formed SVG with all labels", "[plot]") {
     INFO(text);
     CHECK(svg.find(text) != std::string::npos);
   }
-  // Three panels, each with its clip path; log axes label their decades.
+  // Three panels, each with its two clip paths (lines to the plot area, markers a little wider); log axes
+  // label their decades.
   CHECK(Count(svg, "<g class=\"panel\">") == 3);
-  CHECK(Count(svg, "<clipPath") == 3);
+  CHECK(Count(svg, "<clipPath") == 6);
   CHECK(svg.find(">0.01</text>") != std::string::npos);
   CHECK(svg.find(">10</text>") != std::string::npos);
   // The NaN splits the log-log line into two subpaths and draws no "nan" coordinate.
