@@ -72,6 +72,7 @@ struct DesignInput {
 // A design computed by the strip solver from its own config (root = that config's map).
 void ComputeDesign(io::YamlMap& root, const std::string& file, DesignInput* in, double cs_override) {
   const eval::DesignCase dc = io::LoadDesignCase(root, file, in->design.name);
+  if (root.Has("compare")) root.Skip("compare");  // measured data drawn by rao/coefficients, not used here
   root.Finish();
   const std::vector<double> omega = eval::SeaFrequencies(dc);
   CheckRunCost("evaluate: design '" + in->design.name + "'",

@@ -16,10 +16,9 @@ namespace hullopt::io {
 std::optional<MeasuredRao> ReadRaoComparison(YamlMap& root, double Fn, double length_m, double g_m_s2) {
   if (!root.Has("compare")) return std::nullopt;
   YamlMap c = root.Map("compare");
-  const std::string given = c.String("tank_rao_csv");
-  const std::string file = ResolveConfigPath(given, root.file());
+  const std::string file = ConfigFilePath(c, "tank_rao_csv");
   MeasuredRao m;
-  m.label = c.String("label", "measured (" + std::filesystem::path(given).filename().string() + ")");
+  m.label = c.String("label", "measured (" + std::filesystem::path(file).filename().string() + ")");
   c.Finish();
   const double nan = std::numeric_limits<double>::quiet_NaN();
   std::set<double> speeds;

@@ -28,7 +28,7 @@ COMMANDS = ["hull", "section", "rao", "coefficients", "evaluate", "optimize", "e
 # Keys that hold file paths: made absolute in the temporary copies so they read the same files wherever the
 # copy lives (tried beside the original config, then from the repository root).
 PATH_KEYS = {"offsets_csv", "stl", "data", "forced_heave_csv", "forced_pitch_csv", "wave_loads_csv", "rao_csv",
-             "config", "scatter_csv"}
+             "config", "scatter_csv", "tank_rao_csv"}
 
 # Mappings whose keys are names the user chooses (variables, constraints, parameters): one placeholder.
 USER_NAMED = {"variables", "start", "constraints", "parameters"}

@@ -77,7 +77,7 @@ expect_error big_trim "$(base "{ Fn: 0.75 }" "{ omega_rad_s: [2.0] }" |
 # another working directory); a file without a row at the run's Fn is refused naming its speeds.
 mkdir -p "$tmp/cmp/data"
 cp data/delft372/delft372_tank_rao_fn075.csv "$tmp/cmp/data/tank.csv"
-sed "s|data/delft372/delft372_offsets.csv|$PWD/data/delft372/delft372_offsets.csv|" "$tmp/ok.yaml" > "$tmp/cmp/rao.yaml"
+cp "$tmp/ok.yaml" "$tmp/cmp/rao.yaml"
 printf 'compare: { tank_rao_csv: data/tank.csv, label: "tank Fn 0.75" }\n' >> "$tmp/cmp/rao.yaml"
 (cd / && "$bin" rao "$tmp/cmp/rao.yaml" --out "$tmp/cmp/out" > "$tmp/cmp/log") || fail "compare: refused"
 grep -q "measured points drawn: 13" "$tmp/cmp/log" || fail "compare: $(cat "$tmp/cmp/log")"
