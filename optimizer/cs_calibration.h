@@ -1,9 +1,9 @@
 #pragma once
-// Least-squares fit of the sectional damping coefficient Cs (D = ½ Cs ρ U v B, theory notes §1) to measured
-// heave and pitch RAOs, with Ceres. The ship-motion model is abstract: a callable that returns the complex
-// RAOs of one case at its measured points for a given Cs. With the fast strip solver this is cheap (the
-// memory kernels do not depend on Cs; one 2×2 complex solve per frequency), so Ceres differentiates it
-// numerically (central).
+// Least-squares fit of the sectional damping coefficient Cs (D = ½ Cs ρ U v B, docs/theory.md, 'Sectional
+// damping') to measured heave and pitch RAOs, with Ceres. The ship-motion model is abstract: a callable that
+// returns the complex RAOs of one case at its measured points for a given Cs. With the fast strip solver this
+// is cheap (the memory kernels do not depend on Cs; one 2×2 complex solve per frequency), so Ceres
+// differentiates it numerically (central).
 //
 // Residuals, per measured point and quantity q ∈ {heave, pitch} with weight w_q > 0:
 //   absolute:  r = w_q (|X_q computed| − |X_q measured|)               [RAO units × weight]

@@ -5,7 +5,8 @@
 // transom ratio. The exponents set the fullness of entrance (q) and run (p), ξ_m the centroid. Area and first
 // moment are closed forms. For a given ratio k = p/q the two unknowns (ξ_m, q) are found by a grid search and
 // a 2x2 Newton iteration on the exact integrals; k = 1 is tried first, then ratios further from 1, so the
-// curve is as even as the targets allow (theory-notes §5.1, form parameters with a power-law basis).
+// curve is as even as the targets allow (docs/hull-generator.md, 'Generator
+// (parametric_hull/hull_generator.h)', step 1: form parameters with a power-law basis).
 #include <functional>
 #include <string>
 

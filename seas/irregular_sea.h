@@ -1,7 +1,7 @@
 #pragma once
 // Random-phase realisations of a long-crested head sea, for time-domain simulation (the time-marching path)
-// and for checking spectral statistics against time series (theory-notes §3.3: rms and mean |a| of a long
-// record must match σ_a and 0.798 σ_a).
+// and for checking spectral statistics against time series (docs/evaluate.md, 'Verification (tests)': rms and
+// mean |a| of a long record must match σ_a and 0.798 σ_a).
 //
 // The wave spectrum is split into N equal bins in wave frequency ω; each component has amplitude
 // a_i = √(2 S(ω_i) Δω), a uniform random phase φ_i and a frequency drawn uniformly inside its bin (so the

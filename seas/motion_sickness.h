@@ -1,5 +1,5 @@
 #pragma once
-// Motion sickness incidence (MSI) [%] from vertical acceleration (theory-notes §2).
+// Motion sickness incidence (MSI) [%] from vertical acceleration (docs/evaluate.md, 'Method').
 //
 // Default: O'Hanlon & McCauley in Lloyd's form (Lloyd 1989, as coded in the MSS toolbox HMmsi.m, pre-2025):
 //   MSI = 100 Φ((log10(|a|/g) − μ)/0.4),  μ = −0.819 + 2.32 (log10 ω_e)²,  ω_e in rad/s, 2-hour exposure,
@@ -7,7 +7,8 @@
 //   spectrum at the point.
 // Options: the 1974 fit (O'Hanlon & McCauley, 2 h, f in Hz), McCauley et al. 1976 time-dependent form, and
 // the ISO 2631-1 motion sickness dose value with vomiting incidence VI = K_m·MSDV. The 1974/1976 coefficients
-// and K_m are quoted from memory in theory-notes §2.2–2.3 (unverified against the original reports).
+// and K_m are taken from secondary summaries (docs/evaluate.md, 'Method'; not verified against the original
+// reports).
 #include <string>
 
 #include "seas/point_response.h"
@@ -25,7 +26,7 @@ std::string MsiModelName(MsiModel model);
 
 /// Characteristic frequency of the motion used in the MSI formula.
 enum class MsiFrequency {
-  kDisplacementM4M2,         ///< √(m4/m2) of the displacement spectrum (default, theory-notes §2.1)
+  kDisplacementM4M2,         ///< √(m4/m2) of the displacement spectrum (default, docs/evaluate.md, 'Method')
   kAccelerationZeroCrossing  ///< √(m6/m4): zero-crossing frequency of the acceleration
 };
 std::string MsiFrequencyName(MsiFrequency f);  ///< "displacement_m4_m2", "acceleration_zero_crossing"

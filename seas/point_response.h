@@ -1,11 +1,11 @@
 #pragma once
 // Vertical motion of a point on the centreline, x [m] forward of the CG, in one irregular head sea, from the
-// complex RAOs (theory-notes §3.3): s = x3 − x·x5, so the displacement transfer function per unit wave
-// amplitude is H(ω) = X3/A − x·k·(X5/(kA)) with k = ω²/g of the incident wave; S_s(ω_e) = |H|² S_ζ(ω_e), a =
-// −ω_e² s, S_a = ω_e⁴ S_s. Phases matter: heave and pitch add or cancel depending on x.
+// complex RAOs (docs/evaluate.md, 'Method'): s = x3 − x·x5, so the displacement transfer function per unit
+// wave amplitude is H(ω) = X3/A − x·k·(X5/(kA)) with k = ω²/g of the incident wave; S_s(ω_e) = |H|² S_ζ(ω_e),
+// a = −ω_e² s, S_a = ω_e⁴ S_s. Phases matter: heave and pitch add or cancel depending on x.
 //
 // Moments m_n = ∫ ω_eⁿ S_s(ω_e) dω_e are integrated in wave frequency ω, which is exact and regular in head
-// seas (theory-notes §3.2): m_n = ∫ ω_e(ω)ⁿ |H(ω_e(ω))|² S_ζ(ω) dω, composite Simpson, with the RAOs
+// seas (docs/evaluate.md, 'Method'): m_n = ∫ ω_e(ω)ⁿ |H(ω_e(ω))|² S_ζ(ω) dω, composite Simpson, with the RAOs
 // interpolated in complex form on ω_e. Because |H|² is quadratic in x, the sums are stored once per sea as
 // three coefficient sets and every point costs O(1).
 //

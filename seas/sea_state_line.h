@@ -2,8 +2,8 @@
 // The sea-state line of the reference paper (Davis & Holloway 2003, §4): the average period grows with wave
 // height (after Darbyshire & Draper 1963), 5 s in a 0.5 m sea to 7.5 s in a 3 m sea, linear between:
 // Tz = 4.5 s + 1.0 s/m · Hs (so 5.5 s at 1 m, as the paper quotes). "Average period" is read as the
-// zero-crossing period Tz (theory-notes preface: it reproduces the paper's Fig. 7 modal encounter
-// frequencies).
+// zero-crossing period Tz (docs/evaluate.md, 'Verification (tests)': it reproduces the paper's
+// Fig. 7 modal encounter frequencies).
 #include <vector>
 
 #include "seas/wave_spectrum.h"

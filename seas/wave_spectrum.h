@@ -1,7 +1,8 @@
 #pragma once
 // Long-crested wave spectra S_ζ(ω) [m²s/rad] of wave frequency ω [rad/s]: JONSWAP in the DNV-RP-C205 form and
 // the ITTC/Bretschneider (Pierson–Moskowitz shape) two-parameter spectrum, both renormalised numerically so
-// that 4√m0 = Hs exactly (theory-notes §3.1: the DNV factor A_γ alone is off by ~0.1 %).
+// that 4√m0 = Hs exactly (docs/theory.md, 'JONSWAP period ratios': the DNV factor A_γ alone is off by
+// ~0.1 %).
 //
 // A sea state is given by Hs with either the zero-crossing period Tz = 2π√(m0/m2) or the peak period Tp.
 // Tz/Tp depends on γ only and is computed numerically from the spectrum shape (0.7774 at γ = 3.3, 0.7104 at

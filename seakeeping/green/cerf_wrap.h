@@ -1,6 +1,7 @@
 #pragma once
-// Plain-double C interface to libcerf's complex functions (theory notes §1.9). libcerf 1.x declares C99
-// `double _Complex` functions, which C++ cannot call portably; this header and cerf_wrap.c hide that.
+// Plain-double C interface to libcerf's complex functions (docs/theory.md, 'Complex error and Dawson
+// functions (libcerf)'). libcerf 1.x declares C99 `double _Complex` functions, which C++ cannot call
+// portably; this header and cerf_wrap.c hide that.
 #ifdef __cplusplus
 extern "C" {
 #endif

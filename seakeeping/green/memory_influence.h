@@ -1,6 +1,7 @@
 #pragma once
-// Influence of one constant-strength source panel's memory over one time interval (theory notes §1.6), per
-// unit source density σ [m/s], with σ piecewise constant in time. The memory potential of the panel is
+// Influence of one constant-strength source panel's memory over one time interval (docs/theory.md,
+// 'Transient Green function: panel and time integrals'), per unit source density σ [m/s], with σ piecewise
+// constant in time. The memory potential of the panel is
 //   φ_mem(p, t) = −(1/2π) ∫_{τa}^{τb} σ ∫_panel G~(p, q, t − τ) ds dτ,
 // so with lags s1 = t − τb, s2 = t − τa the time integral is exact through H⁽⁻¹⁾ = ∫_0^s H ds' (no aliasing
 // of the fast Cauchy–Poisson oscillation near z = 0):

@@ -1,7 +1,8 @@
 #pragma once
-// Closed-form influence of a constant-strength 2D Rankine source panel (theory notes §1.2): the potential
-// (1/2π)∫ ln r ds and its gradient at a field point, per unit source density σ [m²/s per m]. With the
-// potential of a point source of strength m taken as (m/2π) ln r, σ is the volume flux per unit panel length.
+// Closed-form influence of a constant-strength 2D Rankine source panel (docs/theory.md, 'Rankine panel
+// integrals'): the potential (1/2π)∫ ln r ds and its gradient at a field point, per unit source density σ
+// [m²/s per m]. With the potential of a point source of strength m taken as (m/2π) ln r, σ is the volume flux
+// per unit panel length.
 #include "seakeeping/green/panel.h"
 
 namespace hullopt::sk {

@@ -1,5 +1,6 @@
 #pragma once
-// The 2D transient free-surface Green function of deep water in closed form (theory notes §1.1–1.5).
+// The 2D transient free-surface Green function of deep water in closed form (docs/theory.md,
+// 'Transient Green function: definition and properties' to 'Transient Green function: numerical pitfalls').
 //
 // Memory kernel of a source at q = (η, ζ) seen at p = (y, z), both in the fluid (z, ζ <= 0), a lag t after an
 // impulsive unit source:
@@ -13,7 +14,8 @@
 //   H⁽⁻¹⁾(ζc, t) = ∫_0^t H dt' = 8 Φ(x),   Φ(x) = ∫_0^x F(u) du = (x²/2) ₂F₂(1, 1; 3/2, 2; −x²).
 // Evaluation: Y >= 0 directly (then 0 <= arg x <= π/4) and Y < 0 by conjugate symmetry; for |x| >= 6 the
 // algebraic asymptotic series plus the exact exponential part replaces the cancelling forms of H_t and H'
-// (pitfall 2 of §1.5). a = 0 (both points on the free surface at the same y) has no finite value and throws.
+// (docs/theory.md, 'Transient Green function: numerical pitfalls', item 2). a = 0 (both points on the free
+// surface at the same y) has no finite value and throws.
 #include <complex>
 
 namespace hullopt::sk {

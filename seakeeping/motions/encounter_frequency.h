@@ -1,7 +1,7 @@
 #pragma once
-// Head-sea (heading 180°) encounter frequency on deep water: ω_e = ω + ω²U/g (theory-notes §3.2). The map
-// ω → ω_e is monotone for U ≥ 0 (dω_e/dω = 1 + 2ωU/g > 0), so a head-sea spectrum transforms without the
-// following-sea singularity: S(ω_e) = S(ω) / (dω_e/dω), which keeps ∫ S dω_e = ∫ S dω.
+// Head-sea (heading 180°) encounter frequency on deep water: ω_e = ω + ω²U/g (docs/evaluate.md, 'Method').
+// The map ω → ω_e is monotone for U ≥ 0 (dω_e/dω = 1 + 2ωU/g > 0), so a head-sea spectrum transforms without
+// the following-sea singularity: S(ω_e) = S(ω) / (dω_e/dω), which keeps ∫ S dω_e = ∫ S dω.
 #include <cmath>
 
 namespace hullopt::sk {

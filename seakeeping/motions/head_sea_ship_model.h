@@ -3,7 +3,7 @@
 // state and time marching) share. Heave and pitch only, origin at the CG, x forward, heave x3 up, pitch x5
 // bow-down (docs/conventions.md). The section held at step n of a strip lies at x_n = x_m[n] − LCG.
 //
-// Per unit length at x_n the hull feels (theory notes §4.2, paper §2):
+// Per unit length at x_n the hull feels (docs/theory.md, '2.5D (2D+t) theory'; paper §2):
 //   f_n = f_n^kernel                      disturbance potential (radiation + diffraction), from the strip
 //   kernel
 //       − ρ g B_n s_n                      linear hydrostatic restoring, s = x3 − x x5

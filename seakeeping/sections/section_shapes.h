@@ -12,7 +12,8 @@ using HalfContour = std::vector<std::array<double, 2>>;
 HalfContour SemicircleContour(double radius_m, int points = 400);
 /// Rectangle of beam B and draught T [m].
 HalfContour RectangleContour(double beam_m, double draught_m);
-/// Lewis form of beam B, draught T and area coefficient σ = A/(BT) (theory notes §5.2, Journée's inverse).
+/// Lewis form of beam B, draught T and area coefficient σ = A/(BT) (docs/sections.md, 'Lewis forms':
+/// Journée's inverse).
 /// Throws std::domain_error naming B/T and σ when no non-re-entrant Lewis form exists.
 HalfContour LewisContour(double beam_m, double draught_m, double area_coefficient, int points = 400);
 

@@ -1,8 +1,9 @@
 #pragma once
 // The impulsive (infinite-frequency) limit of the strip kernel: φ = 0 on the mean free surface, as at the
-// first instant of the transient problem (theory notes §4.3, "A∞"). In each strip the disturbance potential
-// follows the instantaneous normal velocity, φ = S A⁻¹ V (A: normal velocity of Rankine panels and their
-// negative images, S: their potentials, collocation at panel midpoints), and the force per unit length is
+// first instant of the transient problem (docs/theory.md, 'Impulsive limit (A∞)'). In each strip the
+// disturbance potential follows the instantaneous normal velocity, φ = S A⁻¹ V (A: normal velocity of Rankine
+// panels and their negative images, S: their potentials, collocation at panel midpoints), and the force per
+// unit length is
 //   f = ρ d/dt ∮ φ n_z dl   (p = −ρ φ_t on the body, force −∮ p n_z dl),
 // taken along the strip: f_n(t) = ρ (Φ_n(t) − Φ_{n−1}(t − Δt))/Δt with Φ_n = q_n · V_n. This is slender-body
 // (2D+t) theory without gravity waves in the strip: no radiation damping, only the momentum exchange with the

@@ -2,10 +2,11 @@
 // Frequency-independent operators of one 2D water strip in the time domain (docs/ship-motions.md;
 // the first stage, used by strip_marcher.h).
 //
-// Model (theory notes §1.2, §1.6). At step n (t_n = n·dt) the strip holds the panels P_n (all bodies sharing
-// the strip: catamaran demihulls, SWATH struts, outriggers). Panel j of step k carries a source density
-// σ_{k,j} [m/s], constant on the panel and over the time interval [max(0, t_k − dt/2), t_k + dt/2] (cut at
-// t_n for k = n): past sources sit on past panels. The potential is
+// Model (docs/theory.md, 'Transient Green function: source-distribution potential and signs' and
+// 'Transient Green function: panel and time integrals'). At step n (t_n = n·dt) the strip holds the panels
+// P_n (all bodies sharing the strip: catamaran demihulls, SWATH struts, outriggers). Panel j of step k
+// carries a source density σ_{k,j} [m/s], constant on the panel and over the time interval
+// [max(0, t_k − dt/2), t_k + dt/2] (cut at t_n for k = n): past sources sit on past panels. The potential is
 //   φ(p, t_n) = Σ_j σ_{n,j} R_j(p) − Σ_{k<=n} Σ_j σ_{k,j} (1/2π) ∫_interval ∫_{panel k,j} G~(p, q, t_n − τ)
 //   ds dτ,
 // R_j = (1/2π)∫(ln r − ln r') ds the Rankine pair. The body condition ∂φ/∂n = V at the collocation points
@@ -13,7 +14,8 @@
 //   System(n) σ_n = V_n + Σ_{k<n} Memory(n, k) σ_k,
 // System(n) = A_n − M_{n,n} (A_n: Rankine normal velocity incl. the +1/2 self term; M_{n,n}: the memory of
 // the current sources over [t_n − dt/2, t_n]), Memory(n, k) = (1/2π)∫∫ ∂G~/∂n over interval k (exact in space
-// and time, theory notes §1.6). The vertical momentum of the strip's disturbance flow,
+// and time, docs/theory.md, 'Transient Green function: panel and time integrals'). The vertical momentum of
+// the strip's disturbance flow,
 //   I_n = ρ ∫_{S_n} φ n_z dl = MomentumCurrent(n) σ_n + Σ_{k<n} MomentumMemory(n, k) σ_k   [kg/s],
 // gives the sectional force f = dI/dt (n into the fluid), see strip_marcher.h and docs/theory.md. The
 // alternative pressure form (SectionalForce::kPressure) needs the momentum of the potential at EARLIER times

@@ -69,9 +69,9 @@ SteadySums Sums(const StripOperators& ops, double omega, int lags) {
     s.K -= z * ops.LagMemory(l).cast<cd>();
     s.mom += z * ops.LagMomentum(l).cast<cd>();
   }
-  // Tail l > lags: G~ → 4/t (theory notes §1.4), so the interval integral of the potential is 4
-  // ln((l+½)/(l−½)) times the panel length, the same at every field point; Σ_{l>L} z^l ln((l+½)/(l−½)) ≈
-  // E1(iω dt (L + ½)).
+  // Tail l > lags: G~ → 4/t (docs/theory.md, 'Transient Green function: limits'), so the interval integral of
+  // the potential is 4 ln((l+½)/(l−½)) times the panel length, the same at every field point; Σ_{l>L} z^l
+  // ln((l+½)/(l−½)) ≈ E1(iω dt (L + ½)).
   double W = 0;  // Σ L_i n_z,i over the field panels
   for (const Panel& p : panels) W += p.y2 - p.y1;
   const cd tail = ExponentialIntegralE1(cd(0.0, omega * dt * (lags + 0.5)));
@@ -119,7 +119,8 @@ HeaveCoefficients TimeDomainHeaveCoefficients(const std::vector<Panel>& panels,
   const double w_max = *std::max_element(omega.begin(), omega.end());
   const double dt = 2 * M_PI / (w_max * options.steps_per_period);
   // Horizon: the slowest memory is between a collocation point just below the surface (depth z_min) and a
-  // waterline end point a distance r' away; it decays like exp(−g t² z_min / (4 r'²)) (theory notes §1.4).
+  // waterline end point a distance r' away; it decays like exp(−g t² z_min / (4 r'²)) (docs/theory.md,
+  // 'Transient Green function: limits').
   double z_min = 1e300, r_max = 0;
   for (const Panel& a : panels) {
     z_min = std::min(z_min, -a.MidZ());

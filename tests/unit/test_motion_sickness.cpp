@@ -1,5 +1,5 @@
-// MSI formulas against hand-computed values of the published forms (theory-notes §2), the ISO 2631-1 W_f
-// weighting against its parameters, and option checks.
+// MSI formulas against hand-computed values of the published forms (docs/evaluate.md, 'Method'), the ISO
+// 2631-1 W_f weighting against its parameters, and option checks.
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <string>
@@ -16,7 +16,7 @@ TEST_CASE("standard normal CDF", "[msi]") {
 }
 
 TEST_CASE("MSI of a = 0.1 g at 0.167 Hz: 32 % Lloyd form, 39 % 1974 form", "[msi]") {
-  // Hand computation (theory-notes §2.2 example, redone here):
+  // Hand computation:
   //   Lloyd: ω = 2π·0.167 = 1.04929 rad/s, log10 ω = 0.020896, μ = −0.819 + 2.32·0.020896² = −0.817987,
   //          z = (log10 0.1 − μ)/0.4 = (−1 + 0.817987)/0.4 = −0.455032, Φ(z) = 0.324543 → 32.45 %.
   //   1974:  log10 0.167 = −0.777284, z = −2.128 + 9.277·0.777284 − 5.809·0.604170 − 1.851

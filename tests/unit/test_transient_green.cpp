@@ -127,7 +127,8 @@ const Row kTable[] = {
 };
 constexpr double kG = 9.81;
 // The table holds 20 digits; libcerf's cdawson is accurate to ~1e−15 and the formulas lose at most ~1e−13
-// (conditioning near the free surface, theory notes §1.5 pitfall 3): 1e−11 relative to |value| tests them.
+// (conditioning near the free surface, docs/theory.md, 'Transient Green function: numerical pitfalls',
+// item 3): 1e−11 relative to |value| tests them.
 constexpr double kTolTable = 1e-11;
 bool Close(cd got, const double want[2], double tol) {
   const cd w(want[0], want[1]);

@@ -1,5 +1,6 @@
-// Wave spectra: 4√m0 = Hs, Tz/Tp ratios of the DNV JONSWAP shape against theory-notes §3.1 (computed there
-// with mpmath), Bretschneider against its closed form, and bad sea-state inputs.
+// Wave spectra: 4√m0 = Hs, Tz/Tp ratios of the DNV JONSWAP shape against the ratios of docs/theory.md,
+// 'JONSWAP period ratios' (computed independently with mpmath), Bretschneider against its closed form, and
+// bad sea-state inputs.
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <string>
@@ -41,7 +42,7 @@ TEST_CASE("4 sqrt(m0) equals Hs within 0.5 % for JONSWAP and Bretschneider", "[s
   }
 }
 
-TEST_CASE("Tz/Tp of the DNV JONSWAP shape matches theory-notes table 3.1", "[spectrum]") {
+TEST_CASE("Tz/Tp of the DNV JONSWAP shape matches the mpmath ratios for gamma 1 to 5", "[spectrum]") {
   // Table values are given to 4 digits: tolerance half a unit of the last digit plus quadrature slack.
   constexpr double kRatioTolerance = 6e-4;
   CHECK(ZeroCrossingToPeakPeriodRatio(3.3) == Approx(0.7774).margin(kRatioTolerance));

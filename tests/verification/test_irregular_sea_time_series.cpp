@@ -1,7 +1,8 @@
 // Time domain against spectral statistics: 30 simulated minutes of random-phase irregular head sea at 40 kn,
 // accelerations at forward, LCG and transom from complex RAOs by superposition, give rms accelerations within
-// 5 % of the spectral σ_a = √m4 and mean |a| within 5 % of √(2/π) σ_a (theory-notes §3.3). The RAOs here are
-// synthetic; with the time-marching ship solver the same check applies to its a(t).
+// 5 % of the spectral σ_a = √m4 and mean |a| within 5 % of √(2/π) σ_a (docs/evaluate.md, 'Method': |a| =
+// √(2/π) σ_a). The RAOs here are synthetic; with the time-marching ship solver the same check applies to its
+// a(t).
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <complex>

@@ -164,7 +164,8 @@ TEST_CASE("weighted average: explicit update diverges when added mass exceeds sh
           "[motions][marching]") {
   BoxHull h;
   h.sections = 40;
-  const auto kernel = BoxKernel(h, 1500.0);  // A/M ≈ 2.9 (theory notes §4.3: w = 1 unstable for A > M)
+  // A/M ≈ 2.9 (docs/theory.md, 'Weighted-average acceleration (averaging method)': w = 1 unstable for A > M)
+  const auto kernel = BoxKernel(h, 1500.0);
   sk::MotionOptions opt;
   opt.damping_cs = 0.1;
   const sk::HeadSeaShipModel model(kernel, BoxMass(h), opt);

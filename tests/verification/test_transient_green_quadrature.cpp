@@ -1,10 +1,11 @@
-// Verification of the transient kernel (theory notes §1.3–1.6):
-//  - H, H_t, H' against direct numerical quadrature of the integral definition (1) at 60+ points, including
+// Verification of the transient kernel (docs/theory.md, 'Transient Green function: closed form' to
+// 'Transient Green function: panel and time integrals'):
+//  - H, H_t, H' against direct numerical quadrature of the integral definition at 60+ points, including
 //    points within 1e−3 of the free surface and t·sqrt(g/r') up to 200 (long-double quadrature, below);
 //  - the free-surface identity H_tt + gH' = 0 by a 6th-order finite difference in t;
 //  - the limits G~ → 4/t (late time) and G~ → 2gt|Z|/r'² (early time);
-//  - the panel and time-step identities of §1.6 and the panel memory influences against brute-force
-//  quadrature.
+//  - the panel and time-interval identities ('Transient Green function: panel and time integrals') and the
+//    panel memory influences against brute-force quadrature.
 #include <array>
 #include <catch2/catch.hpp>
 #include <cmath>
@@ -20,7 +21,7 @@ using cd = std::complex<double>;
 using ld = long double;
 constexpr double kG = 9.81;
 
-// Direct quadrature of (1) after k = s² (theory notes §1.3):
+// Direct quadrature of the definition after k = s² (docs/theory.md, 'Transient Green function: closed form'):
 //   G~   = 4√g ∫ e^{−cs²} cos(Ys²) sin(bs) ds,      G~_t = 4g ∫ s e^{−cs²} cos(Ys²) cos(bs) ds,
 //   G~_z = 4√g ∫ s² e^{−cs²} cos(Ys²) sin(bs) ds,   G~_y = −4√g ∫ s² e^{−cs²} sin(Ys²) sin(bs) ds,
 // c = |Z| > 0, b = √g t. The integrand decays like a Gaussian, so no series acceleration is needed: the range
@@ -186,7 +187,8 @@ TEST_CASE("late- and early-time limits", "[green][verification]") {
   }
 }
 
-TEST_CASE("panel and time-step identities of theory notes 1.6", "[green][verification]") {
+TEST_CASE("panel and time-interval integrals of the kernel match brute-force quadrature",
+          "[green][verification]") {
   constexpr double kTolIdentity = 1e-10;  // brute-force composite Gauss–Legendre converges to ~1e−13 here
   const hullopt::sk::Panel panel{0.9, -0.02, 0.5, -0.6};
   const double L = panel.Length();
