@@ -91,7 +91,11 @@ void RunRao(const std::string& config_file, const std::string& out_dir) {
   PrepareOutputDir(out_dir, "rao", config_file, root.resolved());
   std::ostringstream fn;
   fn << "speed U = " << U << " m/s (Fn " << U / std::sqrt(water.g_m_s2 * hs.L_m) << "), method " << eval::MethodName(sc.rao.method)
-     << ", kernel " << kernel_kind << ", path " << eval::PathName(sc.rao.path) << ", " << sc.rao.sections << " sections x "
+     << ", kernel " << kernel_kind << ", path " << eval::PathName(sc.rao.path)
+     << (sc.rao.path == sk::RaoSolverOptions::Path::kTimeMarching
+             ? " (time scheme " + eval::TimeSchemeName(sc.rao.marching.scheme) + ")"
+             : std::string())
+     << ", " << sc.rao.sections << " sections x "
      << sc.rao.panels << " panels, Cs = " << sc.cs() << (sc.rao.interaction ? "" : ", bodies without interaction")
      << (sc.sectional_force == sk::SectionalForce::kPressure ? ", sectional force: pressure form" : "");
   if (!hull_opts.attitude.IsEvenKeel())

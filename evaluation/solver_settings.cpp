@@ -17,4 +17,6 @@ std::string PathName(sk::RaoSolverOptions::Path path) {
   return path == sk::RaoSolverOptions::Path::kTimeMarching ? "time_marching" : "periodic";
 }
 
+std::string TimeSchemeName(sk::TimeSchemeKind scheme) { return sk::TimeSchemeName(scheme); }
+
 }  // namespace hullopt::eval

@@ -1,6 +1,6 @@
 #pragma once
 // The strip-solver settings of a design, held in the solver's own types: the RAO solver's options (Cs in
-// rao.motion.damping_cs, the time-marching fraction in rao.marching), the form of the sectional force that
+// rao.motion.damping_cs, the time-marching scheme and fraction in rao.marching), the form of the sectional force that
 // picks the kernel builder, and the wave frequencies a config may give.
 #include <string>
 
@@ -26,5 +26,8 @@ sk::RaoSolverOptions RaoOptions(const SolverSettings& settings, const std::strin
 std::string MethodName(sk::RaoSolverOptions::Method method);
 /// The config names of the paths: "periodic", "time_marching".
 std::string PathName(sk::RaoSolverOptions::Path path);
+/// The config names of the time-marching schemes (rao.marching.scheme): "weighted_average_trapezoid",
+/// "paper_single_pass" (the registry's, seakeeping/motions/time_scheme_registry.h).
+std::string TimeSchemeName(sk::TimeSchemeKind scheme);
 
 }  // namespace hullopt::eval

@@ -78,6 +78,16 @@ SolverConfig ParseSolverConfig(YamlMap& s, bool frequencies_required) {
   o.path = s.Choice("path", {"periodic", "time_marching"}, "periodic") == "periodic"
                ? sk::RaoSolverOptions::Path::kPeriodic
                : sk::RaoSolverOptions::Path::kTimeMarching;
+  // The step kinematics of the time-marching path (seakeeping/motions/time_scheme_registry.h). Read (and
+  // recorded in the resolved config) only where it can matter, so that periodic-path configs resolve as before.
+  if (o.path == sk::RaoSolverOptions::Path::kTimeMarching || s.Has("time_scheme")) {
+    const auto names = sk::TimeSchemeNames();
+    sk::FindTimeScheme(s.Choice("time_scheme", names, names.front()), &o.marching.scheme);
+    if (o.path != sk::RaoSolverOptions::Path::kTimeMarching &&
+        o.marching.scheme != sk::TimeSchemeKind::kWeightedAverageTrapezoid)
+      s.Fail("time_scheme", "applies to path: time_marching only (the periodic path has no time steps); remove it "
+                            "or set path: time_marching");
+  }
   o.interaction = s.Boolean("interaction", o.interaction);
   o.layout = s.Choice("stations", {"cell_faces", "cell_midpoints"}, "cell_faces") == "cell_midpoints"
                  ? sk::StationLayout::kCellMidpoints

@@ -9,6 +9,8 @@
 //   Cs: 0.024                        # sectional damping coefficient (>= 0)
 //   hydrodynamic_fraction: 0.2       # time marching: weight of the hydrodynamic acceleration (0 < w <= 1)
 //   path: periodic                   # | time_marching
+//   time_scheme: weighted_average_trapezoid  # | paper_single_pass: time_marching's step kinematics (a
+//                                    # non-default value with path: periodic is an error)
 //   interaction: true                # multihull bodies share the strips (false: one demihull alone)
 //   stations: cell_faces             # | cell_midpoints: where the strip steps sit (docs/ship-motions.md)
 //   sectional_force: momentum        # | pressure: the reference paper's written form (docs/theory.md)

@@ -8,9 +8,10 @@
 namespace hullopt::sk {
 
 bool MarchingOptions::IsValid(std::string* error) const {
+  if (!SchemeParameters().IsValid(error)) return false;
   std::ostringstream os;
-  if (!(hydrodynamic_fraction > 0.0) || !(hydrodynamic_fraction <= 1.0)) {
-    os << "hydrodynamic_fraction = " << hydrodynamic_fraction << ": must satisfy 0 < fraction <= 1";
+  if (TimeSchemeName(scheme) == "unknown") {
+    os << "scheme = " << static_cast<int>(scheme) << ": not a registered time scheme";
   } else if (!(ramp_periods >= 0.0) || !std::isfinite(ramp_periods)) {
     os << "ramp_periods = " << ramp_periods << ": must be >= 0";
   } else if (fit_periods < 1) {
@@ -19,14 +20,18 @@ bool MarchingOptions::IsValid(std::string* error) const {
     os << "max_periods = " << max_periods << ": must exceed ramp_periods + fit_periods";
   } else if (!(steady_tolerance > 0.0)) {
     os << "steady_tolerance = " << steady_tolerance << ": must be > 0";
-  } else if (max_passes < 1) {
-    os << "max_passes = " << max_passes << ": must be >= 1";
-  } else if (!(pass_tolerance > 0.0)) {
-    os << "pass_tolerance = " << pass_tolerance << ": must be > 0";
   }
   if (os.str().empty()) return true;
   if (error) *error = os.str();
   return false;
+}
+
+WeightedAverageParameters MarchingOptions::SchemeParameters() const {
+  WeightedAverageParameters p;
+  p.hydrodynamic_fraction = hydrodynamic_fraction;
+  p.max_passes = max_passes;
+  p.pass_tolerance = pass_tolerance;
+  return p;
 }
 
 TimeMarcher::TimeMarcher(const HeadSeaShipModel& model, StripForceModel& forces,
@@ -39,7 +44,13 @@ TimeMarcher::TimeMarcher(const HeadSeaShipModel& model, StripForceModel& forces,
   for (int n = 0; n < model.Steps(); ++n)
     if (forces.PanelsAt(n).size() != static_cast<std::size_t>(model.stations()[n].nz.size()))
       throw std::invalid_argument("time marching: panel counts differ at step " + std::to_string(n));
-  velocity_.resize(model.Steps());
+  scheme_ = MakeTimeScheme(options.scheme, options.SchemeParameters());
+  const auto N = static_cast<std::size_t>(model.Steps());
+  velocity_.resize(N);
+  fk_.resize(N);
+  surface_rate_.resize(N);
+  orbital_.resize(N);
+  section_force_.resize(N);
 }
 
 void TimeMarcher::Start(const std::vector<WaveComponent>& sea, double ramp_s) {
@@ -64,9 +75,9 @@ void TimeMarcher::Start(const std::vector<WaveComponent>& sea, double ramp_s) {
     }
   }
   forces_.Reset();
+  scheme_->Restart();
   t_ = 0.0;
-  k_step_ = 0;
-  for (int i = 0; i < 2; ++i) x_[i] = v_[i] = a_[i] = a_prev_[i] = a_scale_[i] = 0.0;
+  state_ = MarchingState{};
 }
 
 double TimeMarcher::WaveAtCg() const {
@@ -77,79 +88,58 @@ double TimeMarcher::WaveAtCg() const {
   return r * z;
 }
 
+DofPair TimeMarcher::HullAcceleration(const DofPair& x3x5, const DofPair& v3v5, int trial) {
+  const double U = model_.speed(), rho = model_.rho(), g = model_.g(), damp = model_.DampingFactor();
+  const auto& st = model_.stations();
+  const int N = model_.Steps();
+  for (int n = 0; n < N; ++n) {
+    const StationData& s = st[n];
+    const double x = s.x_cg_m;
+    const double disp = x3x5[0] - x * x3x5[1];
+    const double v_hull = v3v5[0] - x * v3v5[1] + U * x3x5[1];
+    velocity_[n] = s.nz.array() * (v_hull - orbital_[n].array());
+    section_force_[n] = -rho * g * s.beam_m * disp + fk_[n] - damp * s.beam_m * (v_hull - surface_rate_[n]);
+  }
+  if (trial == 0) {
+    forces_.Advance(velocity_, &kernel_force_);
+  } else {
+    forces_.Revise(velocity_, &kernel_force_);
+  }
+  double F3 = 0.0, F5 = 0.0;
+  for (int n = 0; n < N; ++n) {
+    const double f = kernel_force_[n] + section_force_[n];
+    F3 += f * st[n].weight_m;
+    F5 -= st[n].x_cg_m * f * st[n].weight_m;
+  }
+  return {F3 / model_.mass(), F5 / model_.pitch_inertia()};
+}
+
 void TimeMarcher::Step() {
-  const double dt = model_.dt(), U = model_.speed(), rho = model_.rho(), g = model_.g();
-  const double w = options_.hydrodynamic_fraction, damp = model_.DampingFactor();
-  const double x0[2] = {x_[0], x_[1]}, v0[2] = {v_[0], v_[1]};
-  double guess[2];
-  for (int i = 0; i < 2; ++i) guess[i] = k_step_ >= 1 ? 2.0 * a_[i] - a_prev_[i] : a_[i];
+  const double dt = model_.dt(), rho = model_.rho(), g = model_.g();
   t_ += dt;
-  ++k_step_;
   const double r = (ramp_s_ > 0.0 && t_ < ramp_s_) ? 0.5 * (1.0 - std::cos(M_PI * t_ / ramp_s_)) : 1.0;
   const auto& st = model_.stations();
   const int N = model_.Steps();
   const auto J = static_cast<Eigen::Index>(sea_.size());
-  // Wave terms of this time, fixed during the passes: Froude–Krylov force, rate of rise of the surface and
-  // the orbital velocity at the collocation points.
-  std::vector<double> fk(N, 0.0), surface_rate(N, 0.0);
-  std::vector<Eigen::VectorXd> orbital(N);
   Eigen::VectorXd wz(J);
   for (int n = 0; n < N; ++n) {
+    fk_[n] = 0.0;
+    surface_rate_[n] = 0.0;
     for (Eigen::Index j = 0; j < J; ++j) {
       const double th = omega_e_[j] * t_ + k_[j] * st[n].x_cg_m + sea_[j].phase_rad;
       const double amp = r * sea_[j].amplitude_m;
-      fk[n] += rho * g * fk_width_[n][j] * amp * std::cos(th);
+      fk_[n] += rho * g * fk_width_[n][j] * amp * std::cos(th);
       wz[j] = -sea_[j].omega_rad_s * amp * std::sin(th);
-      surface_rate[n] += wz[j];
+      surface_rate_[n] += wz[j];
     }
-    orbital[n] = ekz_[n] * wz;
+    orbital_[n] = ekz_[n] * wz;
   }
-  std::vector<double> section_force(N);
-  double next[2] = {0, 0};
-  for (int pass = 0; pass < options_.max_passes; ++pass) {
-    for (int i = 0; i < 2; ++i) {
-      const double a_mean = 0.5 * (a_[i] + guess[i]);
-      x_[i] = x0[i] + dt * v0[i] + 0.5 * dt * dt * a_mean;
-      v_[i] = v0[i] + dt * a_mean;
-    }
-    for (int n = 0; n < N; ++n) {
-      const StationData& s = st[n];
-      const double x = s.x_cg_m;
-      const double disp = x_[0] - x * x_[1];
-      const double v_hull = v_[0] - x * v_[1] + U * x_[1];
-      velocity_[n] = s.nz.array() * (v_hull - orbital[n].array());
-      section_force[n] = -rho * g * s.beam_m * disp + fk[n] - damp * s.beam_m * (v_hull - surface_rate[n]);
-    }
-    if (pass == 0) {
-      forces_.Advance(velocity_, &kernel_force_);
-    } else {
-      forces_.Revise(velocity_, &kernel_force_);
-    }
-    double F3 = 0.0, F5 = 0.0;
-    for (int n = 0; n < N; ++n) {
-      const double f = kernel_force_[n] + section_force[n];
-      F3 += f * st[n].weight_m;
-      F5 -= st[n].x_cg_m * f * st[n].weight_m;
-    }
-    const double a_hydro[2] = {F3 / model_.mass(), F5 / model_.pitch_inertia()};
-    bool settled = true;
-    for (int i = 0; i < 2; ++i) {
-      next[i] = w * a_hydro[i] + (1.0 - w) * guess[i];
-      a_scale_[i] = std::max(a_scale_[i], std::fabs(next[i]));
-      if (std::fabs(next[i] - guess[i]) > options_.pass_tolerance * a_scale_[i]) settled = false;
-    }
-    if (!std::isfinite(next[0]) || !std::isfinite(next[1])) break;
-    if (settled || pass + 1 == options_.max_passes) break;
-    guess[0] = next[0];
-    guess[1] = next[1];
-  }
-  // The state stays the one the strips were last solved with, so that the strip history and the motion agree.
-  for (int i = 0; i < 2; ++i) {
-    a_prev_[i] = a_[i];
-    a_[i] = next[i];
-  }
-  if (!std::isfinite(x_[0]) || !std::isfinite(x_[1]) || !std::isfinite(a_[0]) || !std::isfinite(a_[1]) ||
-      std::fabs(x_[0]) > 1e6 || std::fabs(x_[1]) > 1e6) {
+  scheme_->Step(dt, [this](const DofPair& x, const DofPair& v, int trial) { return HullAcceleration(x, v, trial); },
+                &state_);
+  const DofPair& x = state_.x;
+  const DofPair& a = state_.a;
+  if (!std::isfinite(x[0]) || !std::isfinite(x[1]) || !std::isfinite(a[0]) || !std::isfinite(a[1]) ||
+      std::fabs(x[0]) > 1e6 || std::fabs(x[1]) > 1e6) {
     std::ostringstream os;
     os << "hull '" << (model_.options().hull_name.empty() ? "(unnamed)" : model_.options().hull_name)
        << "': time marching diverged at t = " << t_ << " s (try a smaller hydrodynamic_fraction)";

@@ -1,38 +1,35 @@
 #pragma once
-// Path 2a: heave and pitch marched in time over the strips with the paper's weighted average of the
-// hydrodynamically derived and the extrapolated acceleration (theory notes §4.3).
-//
-// Step K → K+1 (Δt = Δx/U), trapezoid (Newmark average-acceleration) kinematics:
-//   â⁰      = 2 a_K − a_{K−1}                                 (linear extrapolation; a_0 at the first step)
-//   pass p:  v = v_K + Δt/2 (a_K + âᵖ),  x = x_K + Δt v_K + Δt²/4 (a_K + âᵖ)
-//            F = hull force at t_{K+1} with that state and the wave (strip forces from a StripForceModel)
-//            âᵖ⁺¹ = w F/M + (1 − w) âᵖ                        (w = hydrodynamic fraction)
-// The kernel's instantaneous added-mass part makes the plain explicit update (w = 1) unstable once the added
-// mass exceeds the ship's mass; the weighted average is stable for |1 − w(1 + A/M)| < 1 (theory notes §4.3).
-// With max_passes = 1 this is the single-pass scheme as the paper describes it; its steady state carries an
-// error ≈ (1 − w(1 + A/M))/w · (ω_e Δt)² (the extrapolation error, amplified: 6% at ω_e Δt = 0.13, w = 0.2,
-// A/M small). By default the average is repeated within the step (the current step's strip solution revised)
-// until the acceleration settles, so the result is the implicit trapezoid solution whatever w, whose error
-// against the exact steady state is only the trapezoid's frequency warp (ω_e Δt)²/12.
+// Path 2a: heave and pitch marched in time over the strips (theory notes §4.3). This file holds the force
+// model of a step: hydrostatics, Froude–Krylov and wave terms, the sectional damping and the strip forces of
+// a StripForceModel, summed into the hull's heave and pitch accelerations at a trial state. How the trial
+// states are chosen is the time scheme's business (time_scheme.h), picked by MarchingOptions::scheme from the
+// registry (time_scheme_registry.h); Δt = Δx/U, the strip step.
+#include <memory>
 #include <vector>
 
 #include "seakeeping/motions/head_sea_ship_model.h"
 #include "seakeeping/motions/head_sea_wave.h"
 #include "seakeeping/motions/rao_table.h"
+#include "seakeeping/motions/time_scheme.h"
+#include "seakeeping/motions/time_scheme_registry.h"
 #include "seakeeping/strip/strip_force_model.h"
 
 namespace hullopt::sk {
 
 struct MarchingOptions {
+  TimeSchemeKind scheme = TimeSchemeKind::kWeightedAverageTrapezoid;  ///< the step kinematics (registry)
   double hydrodynamic_fraction = 0.2;  ///< w [-], 0 < w <= 1 (paper: 0.2–0.4 acceptable)
   double ramp_periods = 3.0;  ///< regular waves: half-cosine ramp-in of the wave [encounter periods], >= 0
   int fit_periods = 4;        ///< regular waves: Fourier fit over this many last periods, >= 1
   int max_periods = 400;      ///< regular waves: give up after this many periods, > ramp + fit
   double steady_tolerance = 1e-4;  ///< change of |ΔX3/A| + |ΔX5/(kA)| between successive fits, > 0
-  int max_passes = 200;            ///< weighted-average passes per step, >= 1 (1: the paper's single pass)
+  int max_passes = 200;  ///< cap of weighted_average_trapezoid's passes per step, >= 1 (1: the same steps as
+                         ///< paper_single_pass); paper_single_pass makes one pass whatever this says
   double pass_tolerance = 1e-7;    ///< stop the passes when the acceleration changes by less than this
                                    ///< fraction of its running maximum, > 0
   bool IsValid(std::string* error) const;
+  /// The weighted-average scheme's parameters among these options.
+  WeightedAverageParameters SchemeParameters() const;
 };
 
 /// Motions sampled at every time step.
@@ -53,24 +50,30 @@ class TimeMarcher {
   /// One time step. Throws std::domain_error naming the hull if the motion becomes non-finite (unstable).
   void Step();
   double time_s() const { return t_; }
-  double heave_m() const { return x_[0]; }
-  double pitch_rad() const { return x_[1]; }
+  double heave_m() const { return state_.x[0]; }
+  double pitch_rad() const { return state_.x[1]; }
   double WaveAtCg() const;
 
  private:
+  /// The hull's accelerations (F3/M, F5/I_yy) at t_ with the trial state (x, v); trial 0 advances the strips.
+  DofPair HullAcceleration(const DofPair& x, const DofPair& v, int trial);
+
   const HeadSeaShipModel& model_;
   StripForceModel& forces_;
   MarchingOptions options_;
+  std::unique_ptr<TimeScheme> scheme_;
   std::vector<WaveComponent> sea_;
   std::vector<double> k_, omega_e_;
   std::vector<std::vector<double>> fk_width_;  // [n][component] G_n(k_j)
   std::vector<Eigen::MatrixXd> ekz_;           // [n] panels × components, e^{k_j z_i}
   double ramp_s_ = 0.0, t_ = 0.0;
-  long k_step_ = 0;
-  double x_[2] = {0, 0}, v_[2] = {0, 0}, a_[2] = {0, 0}, a_prev_[2] = {0, 0};
-  double a_scale_[2] = {0, 0};  // running max |a| for the pass tolerance
+  MarchingState state_;
+  // Wave terms of the current step, fixed during its trials: Froude–Krylov force, rate of rise of the surface
+  // and the orbital velocity at the collocation points.
+  std::vector<double> fk_, surface_rate_;
+  std::vector<Eigen::VectorXd> orbital_;
   std::vector<Eigen::VectorXd> velocity_;
-  std::vector<double> kernel_force_;
+  std::vector<double> kernel_force_, section_force_;
 };
 
 /// Regular-wave RAOs by marching each frequency from rest to steady state and fitting amplitude and phase

@@ -81,3 +81,27 @@ TEST_CASE("bad solver and mass input: one clear error each", "[config][errors]")
   CHECK_THROWS_WITH(mass("kyy_m: -1\n"), Catch::Contains("kyy_m"));
   CHECK_THROWS_WITH(mass("lcg_m_from_ap: 5\n"), Catch::Contains("lcg_m_from_ap"));
 }
+
+TEST_CASE("solver.time_scheme: by name, time-marching path only", "[config]") {
+  using hullopt::sk::TimeSchemeKind;
+  const std::string f = "frequencies: { omega_rad_s: [1.0] }\n";
+  auto parse = [](const std::string& text) {
+    auto m = FromText(text);
+    return hullopt::io::ParseSolverConfig(m);
+  };
+  CHECK(parse("path: time_marching\n" + f).rao.marching.scheme == TimeSchemeKind::kWeightedAverageTrapezoid);
+  CHECK(parse("path: time_marching\ntime_scheme: paper_single_pass\n" + f).rao.marching.scheme ==
+        TimeSchemeKind::kPaperSinglePass);
+  // The default may be written with the periodic path (a resolved time-marching config switched back).
+  CHECK(parse("time_scheme: weighted_average_trapezoid\n" + f).rao.marching.scheme ==
+        TimeSchemeKind::kWeightedAverageTrapezoid);
+  // The periodic path's resolved config does not gain the key.
+  auto m = FromText(f);
+  hullopt::io::ParseSolverConfig(m);
+  CHECK_FALSE(m.resolved()["time_scheme"]);
+  CHECK_THROWS_WITH(parse("path: time_marching\ntime_scheme: rk4\n" + f),
+                    Catch::Contains("solver.time_scheme") && Catch::Contains("weighted_average_trapezoid") &&
+                        Catch::Contains("paper_single_pass"));
+  CHECK_THROWS_WITH(parse("time_scheme: paper_single_pass\n" + f),
+                    Catch::Contains("solver.time_scheme") && Catch::Contains("path: time_marching only"));
+}
