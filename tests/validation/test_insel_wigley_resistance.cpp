@@ -88,3 +88,25 @@ TEST_CASE("Insel's Wigley model: measured C_T against the thin-ship prediction, 
     CHECK(f->worst <= kWorstBound);
   }
 }
+
+TEST_CASE("Insel's thin-ship interference curve of the Wigley catamaran, S/L = 0.2", "[validation][!mayfail]") {
+  // Insel's curve is a finite-canal calculation (tank 3.7 m wide, 1.85 m deep), hullopt's the open-sea
+  // Michell integral: the canal's transverse modes make his curve jump by up to 0.1 between neighbouring
+  // anchors, so single points are compared loosely and the main hump (Fn 0.45) on its own. Tolerances set
+  // before the comparison: 0.15 absolute per point (reading 0.02 + canal-mode jumps ~0.1), hump within 10 %
+  // (Insel: wall and shallow-water effects on the catamaran < 4 %). [!mayfail]: a miss is reported, not hidden.
+  constexpr double kPointTol = 0.15, kHumpTol = 0.10;
+  const auto pts = ReadPoints("wigley_c2_theory_interference_sl02.csv", false);
+  REQUIRE(pts.size() == 9);
+  const res::ResistanceOptions options;
+  const res::CalmWaterResistance mono(test::WigleyHull(L, B, T, 41, 41), options);
+  const res::CalmWaterResistance cat(test::WigleyCatamaran(L, B, T, 0.2 * L, 41, 41), options);
+  std::printf("interference S/L = 0.2\n   Fn    tau Insel  tau hullopt\n");
+  for (const Point& p : pts) {  // Point.C_T holds tau here
+    const double U = p.Fn * std::sqrt(g * L);
+    const double tau = cat.At(U, rho, g).R_W_N / (2.0 * mono.At(U, rho, g).R_W_N);
+    std::printf("  %.2f   %.3f      %.3f\n", p.Fn, p.C_T, tau);
+    CHECK(std::fabs(tau - p.C_T) <= kPointTol);
+    if (p.Fn == 0.45) CHECK(tau / p.C_T == Approx(1.0).margin(kHumpTol));
+  }
+}
