@@ -40,7 +40,10 @@ FEW_FREQUENCIES = {"range": {"quantity": "lambda_over_L", "from": 1.0, "to": 3.0
 # Keys read only when present on paths the runs below do not take (alternative inputs, Pareto sweeps, the
 # cost-estimate override...). Each must also be documented; its last component is checked against the source.
 READ_WHEN_PRESENT = {
-    "optimize": ["optimize.pareto.quantity", "optimize.pareto.points", "optimize.pareto.from", "optimize.pareto.to"],
+    "optimize": ["optimize.pareto.quantity", "optimize.pareto.points", "optimize.pareto.from", "optimize.pareto.to",
+                 "solver.time_scheme"],
+    # read with `solver.path: time_marching` only
+    **{c: ["solver.time_scheme"] for c in ("rao", "coefficients", "evaluate", "explore", "calibrate")},
 }
 
 

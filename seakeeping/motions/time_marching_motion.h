@@ -1,6 +1,6 @@
 #pragma once
-// Path 2a: heave and pitch marched in time over the strips (theory notes §4.3). This file holds the force
-// model of a step: hydrostatics, Froude–Krylov and wave terms, the sectional damping and the strip forces of
+// Path 2a: heave and pitch marched in time over the strips (docs/theory.md, 'Weighted-average
+// acceleration (averaging method)'). This file holds the force model of a step: hydrostatics, Froude–Krylov and wave terms, the sectional damping and the strip forces of
 // a StripForceModel, summed into the hull's heave and pitch accelerations at a trial state. How the trial
 // states are chosen is the time scheme's business (time_scheme.h), picked by MarchingOptions::scheme from the
 // registry (time_scheme_registry.h); Δt = Δx/U, the strip step.

@@ -1,6 +1,7 @@
 #pragma once
 // Trapezoid (Newmark average-acceleration) kinematics with the paper's weighted average of the hydrodynamic
-// and the extrapolated acceleration (theory notes §4.3). Step K → K+1:
+// and the extrapolated acceleration (docs/theory.md, 'Weighted-average acceleration (averaging method)').
+// Step K → K+1:
 //   â⁰      = 2 a_K − a_{K−1}                                 (linear extrapolation; a_0 at the first step)
 //   pass p:  v = v_K + Δt/2 (a_K + âᵖ),  x = x_K + Δt v_K + Δt²/4 (a_K + âᵖ)
 //            âᵖ⁺¹ = w F(x, v)/M + (1 − w) âᵖ                  (w = hydrodynamic fraction)
