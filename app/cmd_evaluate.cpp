@@ -30,6 +30,8 @@
 #include <stdexcept>
 
 #include "app/commands.h"
+#include "app/design_resolution_check.h"
+#include "io/design_defaults.h"
 #include "io/design_config.h"
 #include "app/output_dir.h"
 #include "app/run_checks.h"
@@ -126,33 +128,6 @@ DesignInput ReadDesign(io::YamlMap& m, const std::string& config_file, double g,
   return in;
 }
 
-// Re-runs a computed design at factor x its sections and panels on the same frequencies and seas; a design
-// that moves by more than the tolerances carries the warning in its RAO table, and so in every output.
-void CheckResolution(const io::ResolutionCheckConfig& check, const std::vector<sk::WaveSpectrum>& spectra,
-                     const std::vector<sk::PassengerPosition>& points, const sk::EvaluationOptions& options,
-                     DesignInput* in) {
-  eval::DesignCase fine = *in->computed;
-  fine.solver.rao.sections *= check.factor;
-  fine.solver.rao.panels *= check.factor;
-  if (fine.solver.rao.sections > 400 || fine.solver.rao.panels > 100)
-    throw io::InputError(in->where + ": design '" + in->design.name + "': resolution_check.factor " +
-                         std::to_string(check.factor) + " asks for " + std::to_string(fine.solver.rao.sections) +
-                         " sections x " + std::to_string(fine.solver.rao.panels) +
-                         " panels, beyond the solver's 400 x 100");
-  const sk::RaoTable fine_rao = eval::ComputeDesignRaos(fine, in->design.rao.omega_rad_s, in->cs_override);
-  sk::DesignEvaluation fine_eval;
-  try {
-    fine_eval = sk::EvaluateDesign(fine_rao, in->design.hull, spectra, points, options);
-  } catch (const std::exception& e) {
-    throw io::InputError(in->where + ": design '" + in->design.name + "' at the check's resolution: " + e.what());
-  }
-  in->design.resolution = sk::CompareResolutions(in->design.rao, fine_rao, in->design.evaluation, fine_eval,
-                                                 in->computed->solver.rao.sections, in->computed->solver.rao.panels,
-                                                 fine.solver.rao.sections, fine.solver.rao.panels, check.options);
-  if (!in->design.resolution->converged)
-    in->design.rao.warnings.push_back("resolution check: " + in->design.resolution->warning);
-}
-
 double ReadSpeedCheck(io::YamlMap& root) {
   if (!root.Has("speed")) return NAN;
   io::YamlMap s = root.Map("speed");
@@ -185,6 +160,10 @@ void Run(const std::string& config_file, const std::string& out_dir) {
 
   std::vector<DesignInput> inputs;
   if (computed) {
+    std::vector<std::string> notes;
+    io::SkipCampaignBlocks(root, &notes);
+    io::FillDesignDefaults(root, &notes);
+    for (const auto& n : notes) std::cerr << "hullopt: note: " << n << "\n";
     DesignInput in;
     in.where = root.Where("hull");
     in.design.name = std::filesystem::path(config_file).stem().string();
@@ -254,7 +233,9 @@ void Run(const std::string& config_file, const std::string& out_dir) {
     } catch (const std::domain_error& e) {
       throw io::InputError(in.where + ": design '" + in.design.name + "': " + e.what());
     }
-    if (resolution.enabled && in.computed) CheckResolution(resolution, spectra, points, options, &in);
+    if (resolution.enabled && in.computed)
+      CheckDesignResolution(resolution, spectra, points, options, *in.computed, in.cs_override, in.where,
+                            &in.design);
     if (resolution.enabled && !in.computed)
       in.design.rao.warnings.push_back("resolution check not made: RAOs read from a file (give the design's config)");
     designs.push_back(in.design);

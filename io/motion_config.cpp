@@ -2,6 +2,7 @@
 
 #include <sstream>
 
+#include "evaluation/trial_design.h"
 #include "parametric_hull/plausibility.h"
 
 namespace hullopt::io {
@@ -110,9 +111,9 @@ hull::MassProperties ParseMassConfig(YamlMap& m, const hull::Hydrostatics& hs,
     os << "must lie on the waterline length, between " << x0 << " and " << x1 << " m from the AP";
     m.Fail("lcg_m_from_ap", os.str());
   }
-  p.kyy_m = m.Number("kyy_m", 0.25 * hs.L_m);
+  p.kyy_m = m.Number("kyy_m", eval::kDefaultKyyOverL * hs.L_m);
   if (!(p.kyy_m > 0.0)) m.Fail("kyy_m", "must be > 0 (typically 0.25 L)");
-  p.kg_m = m.Number("kg_m", hs.T_m);
+  p.kg_m = m.Number("kg_m", eval::kDefaultKgOverT * hs.T_m);
   const bool accept = m.Boolean("accept_mass_mismatch", false);
   m.Finish();
   for (const auto& f : hull::CheckMassPlausibility(p, hs, accept)) {
