@@ -4,8 +4,8 @@
 //   range  ω from min(0.2 rad/s, ω at λ/L = 8) to max(3.0 rad/s, ω at λ/L = 0.25): the sea grid of
 //          EvaluationFrequencies() widened, for a short hull, to the wavelengths of its motion response;
 //   step   Δω = 0.25 √(g/L) / (1 + 2 ω₂ U / g), ω₂ = ω at λ/L = 2: a quarter of the length's natural
-//          frequency unit in encounter frequency where high-speed head-sea heave and pitch peak
-//          (λ/L 1.5 to 3), divided by dω_e/dω there, so that the peak in ω_e is sampled ~10 times across;
+//          frequency unit, in encounter frequency where high-speed head-sea heave and pitch peak
+//          (λ/L 1.5 to 3), divided by dω_e/dω there, so that the peak in ω_e is sampled ~10 times across (an undamped SWATH peak, Cs 0, is not);
 //   count  (range / step) + 1, within [60, 400].
 #include "seakeeping/motions/frequency_list.h"
 
