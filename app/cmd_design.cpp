@@ -7,20 +7,16 @@
 #include <sstream>
 
 #include "app/commands.h"
-#include "app/design_resolution_check.h"
+#include "app/single_design.h"
 #include "app/output_dir.h"
 #include "app/run_checks.h"
 #include "io/bodyplan_svg.h"
-#include "io/design_config.h"
-#include "io/design_defaults.h"
 #include "io/evaluation_report.h"
 #include "io/html_report.h"
 #include "io/hydrostatics_json.h"
 #include "io/input_error.h"
 #include "io/rao_csv_writer.h"
 #include "io/rao_plot.h"
-#include "io/resolution_check_config.h"
-#include "io/seas_config.h"
 #include "io/yaml_map.h"
 
 namespace hullopt::app {
@@ -36,7 +32,7 @@ void AddReport(const std::string& out, const std::string& config, const YAML::No
                const eval::DesignCase& dc, const io::EvaluatedDesign& d, const std::vector<std::string>& notes,
                const std::vector<std::string>& warnings) {
   io::HtmlReport r("hullopt design: " + d.name);
-  r.Paragraph("Config " + config + "; hull at " + Fmt(dc.speed_m_s / (1852.0 / 3600.0)) + " kn (U " +
+  r.Paragraph("Config " + config + "; hull at " + Fmt(SpeedKnots(dc)) + " kn (U " +
               Fmt(dc.speed_m_s) + " m/s, Fn " + Fmt(d.parameters.at("Fr"), 3) + "), head seas.");
   r.Heading("Warnings and notes");
   r.List(warnings, "No warnings.");
@@ -78,36 +74,13 @@ void AddReport(const std::string& out, const std::string& config, const YAML::No
 
 void RunDesign(const std::string& config, const std::string& out) {
   io::YamlMap root = io::YamlMap::LoadFile(config);
-  std::vector<std::string> notes;
-  io::SkipCampaignBlocks(root, &notes);
-  io::FillDesignDefaults(root, &notes);
   const std::string name = std::filesystem::path(config).stem().string();
-  const eval::DesignCase dc = io::LoadDesignCase(root, config, name);
-  const std::vector<sk::SeaState> seas = io::ReadSeas(root);
-  sk::EvaluationOptions options;
-  options.msi = io::ReadMsiOptions(root);
-  io::EvaluatedDesign d;
-  d.name = name;
-  d.hull = dc.Extent();
-  d.parameters = dc.Parameters();
-  d.frequency_advice = eval::SeaFrequencyAdvice(dc, config);
-  io::YamlMap positions = root.MapOrEmpty("positions");
-  const std::vector<sk::PassengerPosition> points = io::ReadPassengerPoints(positions, &d.hull);
-  positions.Finish();
-  const io::ResolutionCheckConfig resolution = io::ReadResolutionCheck(root);
-  root.Finish();
-  CheckOutputDirConfig(out, "design", root.resolved());
-  const std::vector<double> omega = eval::SeaFrequencies(dc);
-  CheckRunCost("design", io::StripWorkFromResolved(root.resolved(), static_cast<long>(omega.size())));
-  d.rao = eval::ComputeDesignRaos(dc, omega);
-  const std::vector<sk::WaveSpectrum> spectra = sk::BuildSpectra(seas);
-  try {
-    d.evaluation = sk::EvaluateDesign(d.rao, d.hull, spectra, points, options);
-  } catch (const std::exception& e) {
-    throw io::InputError(config + ": design '" + name + "': " + e.what());
-  }
-  if (resolution.enabled) CheckDesignResolution(resolution, spectra, points, options, dc, -1.0, config, &d);
-
+  SingleDesign sd = EvaluateSingleDesign(root, name, "design", true,
+                                         [&] { CheckOutputDirConfig(out, "design", root.resolved()); });
+  const eval::DesignCase& dc = sd.design;
+  io::EvaluatedDesign& d = sd.evaluated;
+  const sk::EvaluationOptions& options = sd.options;
+  const std::vector<std::string>& notes = sd.notes;
   PrepareOutputDir(out, "design", config, root.resolved());
   io::HydrostaticsReport rep;
   rep.hs = hull::ComputeHydrostatics(dc.hull, dc.water.rho_kg_m3, dc.mass.kg_m);

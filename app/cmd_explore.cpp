@@ -13,6 +13,7 @@
 
 #include "app/campaign_journal.h"
 #include "app/campaign_setup.h"
+#include "app/campaign_report.h"
 #include "app/commands.h"
 #include "app/mpi_context.h"
 #include "app/output_dir.h"
@@ -183,6 +184,7 @@ void RunExplore(const ExploreCliOptions& o) {
         o.config.c_str(), best, recs[best].result.objective);
     io::WriteBestYaml(OutPath(o.out, "best.yaml"), lc.raw, lc.config.block, names, lc.config.start_source,
                       recs[best].x, comment);
+    WriteCampaignReport(o.out, "explore", o.config);
   }
   if (!o.quiet) {
     std::printf("%zu samples (%zu feasible)", recs.size(), fx.size());

@@ -12,6 +12,7 @@
 
 #include "app/campaign_journal.h"
 #include "app/campaign_setup.h"
+#include "app/campaign_report.h"
 #include "app/commands.h"
 #include "app/mpi_context.h"
 #include "app/output_dir.h"
@@ -238,6 +239,7 @@ void RunOptimize(const OptimizeOptions& o) {
         o.config.c_str(), best, recs[best].result.objective);
     io::WriteBestYaml(OutPath(o.out, "best.yaml"), lc.raw, lc.config.block, def.VariableNames(),
                       lc.config.start_source, recs[best].x, comment);
+    WriteCampaignReport(o.out, "optimize", o.config);
   }
   if (!o.quiet) {
     if (best >= 0) {
