@@ -28,6 +28,8 @@ SingleDesign Evaluate(const std::string& file, const std::string& name, const st
 }  // namespace
 
 void WriteCampaignReport(const std::string& out, const std::string& command, const std::string& config_file) {
+  // A campaign over an analytic objective has no hull: no design to report.
+  if (!io::YamlMap::LoadFile(config_file).Has("hull")) return;
   const SingleDesign base = Evaluate(config_file, "baseline", command);
   const SingleDesign best = Evaluate(OutPath(out, "best.yaml"), "best", command);
   io::HtmlReport r("hullopt " + command + ": baseline and best design");

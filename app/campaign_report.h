@@ -8,7 +8,7 @@
 namespace hullopt::app {
 
 /// Writes out/report.html (and out/baseline_bodyplan.svg, out/best_bodyplan.svg, out/baseline_vs_best_rao.svg).
-/// out must hold best.yaml. command names the campaign (optimize, explore) in the title and cost line.
+/// out must hold best.yaml. Nothing for a campaign config without `hull:` (an analytic objective). command names the campaign (optimize, explore) in the title and cost line.
 void WriteCampaignReport(const std::string& out, const std::string& command, const std::string& config_file);
 
 }  // namespace hullopt::app
