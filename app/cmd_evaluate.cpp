@@ -33,6 +33,8 @@
 #include <stdexcept>
 
 #include "app/commands.h"
+#include "app/design_resolution_check.h"
+#include "io/design_defaults.h"
 #include "io/design_config.h"
 #include "app/output_dir.h"
 #include "app/run_checks.h"
@@ -128,22 +130,6 @@ DesignInput ReadDesign(io::YamlMap& m, double g, bool single) {
   return in;
 }
 
-// Re-runs a computed design at factor x its sections and panels on the same frequencies and seas; a design
-// that moves by more than the tolerances carries the warning in its RAO table, and so in every output.
-void CheckResolution(const io::ResolutionCheckConfig& check, const std::vector<sk::WaveSpectrum>& spectra,
-                     const std::vector<sk::PassengerPosition>& points, const sk::EvaluationOptions& options,
-                     DesignInput* in) {
-  try {
-    in->design.resolution =
-        eval::CheckDesignResolution(*in->computed, in->design.rao, in->design.evaluation, spectra, points, options,
-                                    check.factor, check.options, in->cs_override);
-  } catch (const eval::InputError& e) {
-    throw io::InputError(in->where + ": " + e.what());
-  }
-  if (!in->design.resolution->converged)
-    in->design.rao.warnings.push_back("resolution check: " + in->design.resolution->warning);
-}
-
 double ReadSpeedCheck(io::YamlMap& root) {
   if (!root.Has("speed")) return NAN;
   io::YamlMap s = root.Map("speed");
@@ -176,6 +162,10 @@ void Run(const std::string& config_file, const std::string& out_dir) {
 
   std::vector<DesignInput> inputs;
   if (computed) {
+    std::vector<std::string> notes;
+    io::SkipCampaignBlocks(root, &notes);
+    io::FillDesignDefaults(root, &notes);
+    for (const auto& n : notes) std::cerr << "hullopt: note: " << n << "\n";
     DesignInput in;
     in.where = root.Where("hull");
     // Recorded in config.resolved.yaml, so that a re-run keeps the design's name.
@@ -247,7 +237,9 @@ void Run(const std::string& config_file, const std::string& out_dir) {
     } catch (const std::domain_error& e) {
       throw io::InputError(in.where + ": design '" + in.design.name + "': " + e.what());
     }
-    if (resolution.enabled && in.computed) CheckResolution(resolution, spectra, points, options, &in);
+    if (resolution.enabled && in.computed)
+      CheckDesignResolution(resolution, spectra, points, options, *in.computed, in.cs_override, in.where,
+                            &in.design);
     if (resolution.enabled && !in.computed)
       in.design.rao.warnings.push_back("resolution check not made: RAOs read from a file (give the design's config)");
     designs.push_back(in.design);

@@ -13,6 +13,7 @@
 
 #include "app/campaign_journal.h"
 #include "app/campaign_setup.h"
+#include "app/campaign_report.h"
 #include "app/commands.h"
 #include "app/mpi_context.h"
 #include "app/output_dir.h"
@@ -187,6 +188,7 @@ void RunExplore(const ExploreCliOptions& o) {
                       recs[best].x,
                       resolution_warning.empty() ? std::string(comment)
                                                  : std::string(comment) + "\n# WARNING: " + resolution_warning);
+    WriteCampaignReport(o.out, "explore", o.config);
   }
   if (!o.quiet) {
     std::printf("%zu samples (%zu feasible)", recs.size(), fx.size());

@@ -12,6 +12,7 @@
 
 #include "app/campaign_journal.h"
 #include "app/campaign_setup.h"
+#include "app/campaign_report.h"
 #include "app/commands.h"
 #include "app/mpi_context.h"
 #include "app/output_dir.h"
@@ -242,6 +243,7 @@ void RunOptimize(const OptimizeOptions& o) {
                       lc.config.start_source, recs[best].x,
                       resolution_warning.empty() ? std::string(comment)
                                                  : std::string(comment) + "\n# WARNING: " + resolution_warning);
+    WriteCampaignReport(o.out, "optimize", o.config);
   }
   if (!o.quiet) {
     if (best >= 0) {

@@ -9,6 +9,7 @@ void AddAllCommands(CLI::App& app) {
   AddSectionCommand(app);
   AddRaoCommand(app);
   AddCoefficientsCommand(app);
+  AddDesignCommand(app);
   AddEvaluateCommand(app);
   AddOptimizeCommand(app);
   AddExploreCommand(app);
@@ -16,7 +17,7 @@ void AddAllCommands(CLI::App& app) {
   AddResistanceCommand(app);
   // The commands that run the strip solver estimate its cost first (app/run_checks.h).
   ResetForceOption();
-  for (const char* name : {"section", "rao", "coefficients", "evaluate", "optimize", "explore", "calibrate"})
+  for (const char* name : {"section", "rao", "coefficients", "design", "evaluate", "optimize", "explore", "calibrate"})
     AddForceOption(app.get_subcommand(name));
 }
 

@@ -8,6 +8,7 @@ void AddHullCommand(CLI::App& app);
 void AddSectionCommand(CLI::App& app);
 void AddRaoCommand(CLI::App& app);
 void AddEvaluateCommand(CLI::App& app);
+void AddDesignCommand(CLI::App& app);
 void AddOptimizeCommand(CLI::App& app);
 void AddExploreCommand(CLI::App& app);
 void AddCalibrateCommand(CLI::App& app);

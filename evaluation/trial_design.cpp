@@ -73,8 +73,8 @@ DesignCase BuildTrialDesign(const DesignBasis& b, const std::vector<const hull::
   hull::MassProperties defaults;
   defaults.mass_kg = hs.displacement_kg;
   defaults.lcg_m_from_ap = hs.lcb_m_from_ap;
-  defaults.kyy_m = 0.25 * hs.L_m;
-  defaults.kg_m = hs.T_m;
+  defaults.kyy_m = kDefaultKyyOverL * hs.L_m;
+  defaults.kg_m = kDefaultKgOverT * hs.T_m;
   for (const auto& f : hull::CheckMassPlausibility(defaults, hs, false)) {
     if (f.refuse) throw InputError(file + ":?: key 'mass." + f.quantity + "': " + f.message);
     d.input_warnings.push_back(f.message);

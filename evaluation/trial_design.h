@@ -11,6 +11,12 @@
 
 namespace hullopt::eval {
 
+/// The mass rule of a design without `mass:` (single designs and campaign trials alike): mass = displacement,
+/// LCG = LCB, k_yy = kDefaultKyyOverL L (the usual 0.25 L of fast craft), KG = kDefaultKgOverT T (KG does not
+/// enter heave and pitch; the draught keeps it plausible).
+constexpr double kDefaultKyyOverL = 0.25;
+constexpr double kDefaultKgOverT = 1.0;
+
 /// What a campaign holds fixed about its designs.
 struct DesignBasis {
   std::string config_file;          ///< names the source in messages
@@ -21,8 +27,8 @@ struct DesignBasis {
   SolverSettings solver;
   bool has_frequencies = false;
   /// Mass follows the design: the displacement is fixed, LCG = LCB, k_yy = kyy_over_L L, KG = kg_over_T T.
-  double kyy_over_L = 0.25;
-  double kg_over_T = 1.0;
+  double kyy_over_L = kDefaultKyyOverL;
+  double kg_over_T = kDefaultKgOverT;
 };
 
 /// The free variables of a campaign, in its order (the fields of x); nullptr for a name that is not a campaign

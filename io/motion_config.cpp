@@ -2,6 +2,7 @@
 
 #include <sstream>
 
+#include "evaluation/trial_design.h"
 #include "parametric_hull/plausibility.h"
 
 namespace hullopt::io {
@@ -120,9 +121,24 @@ hull::MassProperties ParseMassConfig(YamlMap& m, const hull::Hydrostatics& hs,
     os << "must lie on the waterline length, between " << x0 << " and " << x1 << " m from the AP";
     m.Fail("lcg_m_from_ap", os.str());
   }
-  p.kyy_m = m.Number("kyy_m", 0.25 * hs.L_m);
-  if (!(p.kyy_m > 0.0)) m.Fail("kyy_m", "must be > 0 (typically 0.25 L)");
-  p.kg_m = m.Number("kg_m", hs.T_m);
+  // The campaigns' ratio keys (a campaign's best.yaml carries them) stand for kyy_m and kg_m; one of each pair.
+  if (m.Has("kyy_over_L") && m.Has("kyy_m")) m.Fail("kyy_over_L", "give kyy_m or kyy_over_L, not both");
+  if (m.Has("kg_over_T") && m.Has("kg_m")) m.Fail("kg_over_T", "give kg_m or kg_over_T, not both");
+  if (m.Has("kyy_over_L")) {
+    const double r = m.Number("kyy_over_L");
+    if (!(r > 0.05 && r < 0.5)) m.Fail("kyy_over_L", "must be within 0.05..0.5");
+    p.kyy_m = r * hs.L_m;
+  } else {
+    p.kyy_m = m.Number("kyy_m", eval::kDefaultKyyOverL * hs.L_m);
+    if (!(p.kyy_m > 0.0)) m.Fail("kyy_m", "must be > 0 (typically 0.25 L)");
+  }
+  if (m.Has("kg_over_T")) {
+    const double r = m.Number("kg_over_T");
+    if (!(r > 0 && r < 10)) m.Fail("kg_over_T", "must be within 0..10");
+    p.kg_m = r * hs.T_m;
+  } else {
+    p.kg_m = m.Number("kg_m", eval::kDefaultKgOverT * hs.T_m);
+  }
   const bool accept = m.Boolean("accept_mass_mismatch", false);
   m.Finish();
   for (const auto& f : hull::CheckMassPlausibility(p, hs, accept)) {

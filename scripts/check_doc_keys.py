@@ -23,7 +23,7 @@ import tempfile
 import yaml
 
 ROOT = os.path.abspath(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
-COMMANDS = ["hull", "section", "rao", "coefficients", "evaluate", "optimize", "explore", "calibrate", "resistance"]
+COMMANDS = ["hull", "section", "rao", "coefficients", "evaluate", "optimize", "explore", "calibrate", "resistance", "design"]
 
 # Keys that hold file paths: made absolute in the temporary copies so they read the same files wherever the
 # copy lives (tried beside the original config, then from the repository root).
@@ -43,7 +43,12 @@ READ_WHEN_PRESENT = {
     "optimize": ["optimize.pareto.quantity", "optimize.pareto.points", "optimize.pareto.from", "optimize.pareto.to",
                  "solver.time_scheme"],
     # read with `solver.path: time_marching` only
-    **{c: ["solver.time_scheme"] for c in ("rao", "coefficients", "evaluate", "explore", "calibrate")},
+    "explore": ["solver.time_scheme"],
+    "calibrate": ["solver.time_scheme", "mass.kyy_over_L", "mass.kg_over_T"],
+    # the campaigns' ratio keys, accepted instead of mass.kyy_m / mass.kg_m (a campaign's best.yaml)
+    **{c: ["solver.time_scheme", "mass.kyy_over_L", "mass.kg_over_T"] for c in ("rao", "coefficients", "evaluate")},
+    "hull": ["mass.kyy_over_L", "mass.kg_over_T"],
+    "design": ["solver.time_scheme", "mass.kyy_over_L", "mass.kg_over_T"],
 }
 
 
@@ -110,6 +115,10 @@ def key_paths(node, prefix=""):
 HULL_P = {"type": "catamaran", "displacement_t": 1000, "L_over_B": 11, "B_over_T": 2, "Cb": 0.4, "Cp": 0.69,
           "Cwp": 0.76, "LCB_pct_L": -6.4, "LCF_pct_L": -8.3}
 RUNS = [
+    ("design", "configs/davis-holloway-2003/hull02_NPL5b.yaml", {"solver": dict(COARSE)}),
+    ("design", "configs/delft372_offsets.yaml",
+     {"solver": dict(COARSE), "positions": {"points": [{"name": "bridge", "x_from_cg_m": 0.5}]},
+      "resolution_check": {"enabled": True, "factor": 2, "msi_tolerance_pct": 1.0, "peak_tolerance_pct": 3.0}}),
     ("hull", "examples/hull_catamaran.yaml", {}),
     ("hull", "configs/delft372_offsets.yaml", {"hull": {"stations": 21}}),
     ("hull", "examples/rao_delft372_running_attitude.yaml", {"speed": {"Fn": None, "m_s": 2.0}}),

@@ -1,0 +1,14 @@
+#pragma once
+// report.html of a campaign folder (optimize, explore): the baseline (the campaign config's own design) beside
+// the best design (best.yaml) — hydrostatics, body plans, RAOs, MSI per sea and position — and the campaign's
+// convergence and variable plots. Both designs are evaluated once here, with the design defaults of
+// io/design_defaults.h for what the campaign config does not give.
+#include <string>
+
+namespace hullopt::app {
+
+/// Writes out/report.html (and out/baseline_bodyplan.svg, out/best_bodyplan.svg, out/baseline_vs_best_rao.svg).
+/// out must hold best.yaml. Nothing for a campaign config without `hull:` (an analytic objective). command names the campaign (optimize, explore) in the title and cost line.
+void WriteCampaignReport(const std::string& out, const std::string& command, const std::string& config_file);
+
+}  // namespace hullopt::app

@@ -1,0 +1,146 @@
+// hullopt design CONFIG --out DIR: one hull (parametric, offsets or STL) through hydrostatics, RAOs,
+// accelerations and MSI with the defaults of io/design_defaults.h, and report.html.
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+#include <sstream>
+
+#include "app/commands.h"
+#include "app/single_design.h"
+#include "app/output_dir.h"
+#include "app/run_checks.h"
+#include "io/bodyplan_svg.h"
+#include "io/evaluation_report.h"
+#include "io/html_report.h"
+#include "io/hydrostatics_json.h"
+#include "io/input_error.h"
+#include "io/rao_csv_writer.h"
+#include "io/rao_plot.h"
+#include "io/yaml_map.h"
+
+namespace hullopt::app {
+namespace {
+
+std::string Fmt(double v, int digits = 4) {
+  char b[64];
+  std::snprintf(b, sizeof b, "%.*g", digits, v);
+  return b;
+}
+
+void AddReport(const std::string& out, const std::string& config, const YAML::Node& resolved,
+               const eval::DesignCase& dc, const io::EvaluatedDesign& d, const std::vector<std::string>& notes,
+               const std::vector<std::string>& warnings) {
+  io::HtmlReport r("hullopt design: " + d.name);
+  r.Paragraph("Config " + config + "; hull at " + Fmt(SpeedKnots(dc)) + " kn (U " +
+              Fmt(dc.speed_m_s) + " m/s, Fn " + Fmt(d.parameters.at("Fr"), 3) + "), head seas.");
+  r.Heading("Warnings and notes");
+  r.List(warnings, "No warnings.");
+  r.List(notes, "No defaults taken.");
+  const auto& h = dc.hydrostatics;
+  r.Heading("Hydrostatics and mass");
+  r.Table({"quantity", "value", "unit"},
+          {{"L (waterline)", Fmt(h.L_m), "m"}, {"B", Fmt(h.B_m), "m"}, {"T", Fmt(h.T_m), "m"},
+           {"displacement", Fmt(h.displacement_t), "t"}, {"Cb", Fmt(h.Cb, 3), "-"}, {"Cp", Fmt(h.Cp, 3), "-"},
+           {"Cm", Fmt(h.Cm, 3), "-"}, {"Cwp", Fmt(h.Cwp, 3), "-"}, {"Cvp", Fmt(h.Cvp, 3), "-"},
+           {"LCB", Fmt(h.LCB_pct_L, 3), "% L fwd of midships"}, {"LCF", Fmt(h.LCF_pct_L, 3), "% L fwd of midships"},
+           {"mass", Fmt(dc.mass.mass_kg / 1000.0), "t"}, {"LCG", Fmt(dc.mass.lcg_m_from_ap), "m from AP"},
+           {"k_yy", Fmt(dc.mass.kyy_m), "m"}, {"KG", Fmt(dc.mass.kg_m), "m"}});
+  r.Heading("Body plan");
+  r.Svg(io::ReadSvgFile(OutPath(out, "bodyplan.svg")));
+  r.Heading("Heave and pitch RAOs");
+  r.Svg(io::ReadSvgFile(OutPath(out, "rao.svg")));
+  r.Heading("Accelerations and MSI per sea and position");
+  std::vector<std::vector<std::string>> rows;
+  for (const auto& s : d.evaluation.seas) {
+    auto add = [&](const sk::PositionResult& p) {
+      rows.push_back({p.position, Fmt(s.sea.Hs_m, 3), Fmt(s.Tz_s, 3),
+                      std::isfinite(p.x_from_cg_m) ? Fmt(p.x_from_cg_m) : "", Fmt(p.rms_accel_g),
+                      Fmt(p.rms_accel_g / s.sea.Hs_m), Fmt(p.msi_pct, 3)});
+    };
+    for (const auto& p : s.positions) add(p);
+    add(s.mean);
+  }
+  r.Table({"position", "Hs [m]", "Tz [s]", "x from CG [m]", "rms accel [g]", "rms accel per Hs [g/m]", "MSI [%]"},
+          rows);
+  for (const char* f : {"accel_per_m.svg", "msi_vs_Hs.svg"})
+    if (std::filesystem::exists(OutPath(out, f))) r.Svg(io::ReadSvgFile(OutPath(out, f)));
+  r.Heading("Inputs (config.resolved.yaml: every default filled in)");
+  YAML::Emitter e;
+  e << resolved;
+  r.Preformatted(e.c_str());
+  io::WriteHtmlReport(OutPath(out, "report.html"), r);
+}
+
+void RunDesign(const std::string& config, const std::string& out) {
+  io::YamlMap root = io::YamlMap::LoadFile(config);
+  const std::string name = std::filesystem::path(config).stem().string();
+  SingleDesign sd = EvaluateSingleDesign(root, name, "design", true,
+                                         [&] { CheckOutputDirConfig(out, "design", root.resolved()); });
+  const eval::DesignCase& dc = sd.design;
+  io::EvaluatedDesign& d = sd.evaluated;
+  const sk::EvaluationOptions& options = sd.options;
+  const std::vector<std::string>& notes = sd.notes;
+  PrepareOutputDir(out, "design", config, root.resolved());
+  io::HydrostaticsReport rep;
+  rep.hs = hull::ComputeHydrostatics(dc.hull, dc.water.rho_kg_m3, dc.mass.kg_m);
+  rep.rho_kg_m3 = dc.water.rho_kg_m3;
+  rep.g_m_s2 = dc.water.g_m_s2;
+  rep.speed_m_s = dc.speed_m_s;
+  rep.warnings = dc.input_warnings;
+  rep.adjustments = dc.hull.adjustments;
+  io::WriteHydrostaticsJson(OutPath(out, "hydrostatics.json"), dc.hull, rep);
+  const auto& h = dc.hydrostatics;
+  std::ostringstream title;
+  title << dc.hull.type << " - L " << Fmt(h.L_m) << " m, B " << Fmt(h.B_m) << " m, T " << Fmt(h.T_m) << " m, "
+        << Fmt(h.displacement_t) << " t";
+  io::WriteBodyPlanSvg(OutPath(out, "bodyplan.svg"), dc.hull, title.str());
+  std::ostringstream about;
+  about << "speed U = " << dc.speed_m_s << " m/s (Fn " << d.parameters.at("Fr") << "), method "
+        << eval::MethodName(dc.solver.rao.method) << ", " << dc.solver.rao.sections << " sections x "
+        << dc.solver.rao.panels << " panels, Cs = " << dc.solver.cs();
+  std::vector<std::string> header = {"hull: " + name, about.str()};
+  for (const auto& w : d.rao.warnings) header.push_back("warning: " + w);
+  try {
+    io::WriteRaoCsv(OutPath(out, "rao.csv"), d.rao, h.L_m, header);
+  } catch (const std::domain_error& e) {
+    throw io::InputError(config + ": design '" + name + "': " + e.what());
+  }
+  io::WriteSvg(io::RaoFigure({d.rao}, {"time-domain strip"}, h.L_m, "RAOs: " + about.str()),
+               OutPath(out, "rao.svg"));
+  const std::vector<io::EvaluatedDesign> designs = {d};
+  io::EvaluationReportOptions report;
+  report.plot_parameters.clear();  // one design: no MSI-vs-parameter plots
+  io::WriteEvaluationOutputs(out, designs, options, report);
+  std::vector<std::string> warnings = io::EvaluationWarnings(designs, report);
+  for (const auto& w : d.rao.warnings) warnings.push_back(w);
+  AddReport(out, config, root.resolved(), dc, d, notes, warnings);
+  for (const auto& n : notes) std::cerr << "hullopt: note: " << n << "\n";
+  for (const auto& w : warnings) std::cerr << "hullopt: warning: " << w << "\n";
+  std::printf("%-8s %6s %6s %10s %10s %10s %8s\n", "design", "Hs_m", "Tz_s", "fwd_g/m", "lcg_g/m", "transom_g/m",
+              "MSI_%");
+  for (const auto& s : d.evaluation.seas)
+    std::printf("%-8s %6.2f %6.2f %10.4f %10.4f %10.4f %8.1f\n", name.c_str(), s.sea.Hs_m, s.Tz_s,
+                s.positions[0].rms_accel_g / s.sea.Hs_m, s.positions[1].rms_accel_g / s.sea.Hs_m,
+                s.positions[2].rms_accel_g / s.sea.Hs_m, s.mean.msi_pct);
+  std::printf("wrote hydrostatics.json, bodyplan.svg, rao.csv, rao.svg, msi.csv, summary.json, report.html to %s\n",
+              out.c_str());
+}
+
+}  // namespace
+
+void AddDesignCommand(CLI::App& app) {
+  auto* cmd = app.add_subcommand(
+      "design", "one hull through hydrostatics, RAOs, accelerations and MSI with documented defaults (report.html)");
+  auto config = std::make_shared<std::string>();
+  auto out = std::make_shared<std::string>();
+  cmd->add_option("config", *config, "YAML config with a hull: map (any hull config or a campaign's best.yaml)")
+      ->required();
+  cmd->add_option("--out", *out, "output folder")->required();
+  cmd->callback([config, out] {
+    const OutputFolderGuard lock(*out, "design", *config);
+    RunDesign(*config, *out);
+  });
+}
+
+}  // namespace hullopt::app

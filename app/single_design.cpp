@@ -1,0 +1,49 @@
+#include "app/single_design.h"
+
+#include "app/design_resolution_check.h"
+#include "app/run_checks.h"
+#include "io/design_config.h"
+#include "io/design_defaults.h"
+#include "io/input_error.h"
+#include "io/run_cost.h"
+#include "io/seas_config.h"
+
+namespace hullopt::app {
+
+SingleDesign EvaluateSingleDesign(io::YamlMap& root, const std::string& name, const std::string& command,
+                                  bool strict, const std::function<void()>& before_work) {
+  SingleDesign s;
+  const std::string& config = root.file();
+  io::SkipCampaignBlocks(root, &s.notes);
+  io::FillDesignDefaults(root, &s.notes);
+  s.design = io::LoadDesignCase(root, config, name);
+  const std::vector<sk::SeaState> seas = io::ReadSeas(root);
+  s.options.msi = io::ReadMsiOptions(root);
+  io::EvaluatedDesign& d = s.evaluated;
+  d.name = name;
+  d.hull = s.design.Extent();
+  d.parameters = s.design.Parameters();
+  d.frequency_advice = eval::SeaFrequencyAdvice(s.design, config);
+  io::YamlMap positions = root.MapOrEmpty("positions");
+  s.points = io::ReadPassengerPoints(positions, &d.hull);
+  positions.Finish();
+  s.resolution = io::ReadResolutionCheck(root);
+  if (strict) root.Finish();
+  if (before_work) before_work();
+  const std::vector<double> omega = eval::SeaFrequencies(s.design);
+  CheckRunCost(command, io::StripWorkFromResolved(root.resolved(), static_cast<long>(omega.size())));
+  d.rao = eval::ComputeDesignRaos(s.design, omega);
+  s.spectra = sk::BuildSpectra(seas);
+  try {
+    d.evaluation = sk::EvaluateDesign(d.rao, d.hull, s.spectra, s.points, s.options);
+  } catch (const std::exception& e) {
+    throw io::InputError(config + ": design '" + name + "': " + e.what());
+  }
+  if (s.resolution.enabled)
+    CheckDesignResolution(s.resolution, s.spectra, s.points, s.options, s.design, -1.0, config, &d);
+  return s;
+}
+
+double SpeedKnots(const eval::DesignCase& design) { return design.speed_m_s / (1852.0 / 3600.0); }
+
+}  // namespace hullopt::app
