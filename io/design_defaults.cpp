@@ -38,7 +38,12 @@ void FillDesignDefaults(YamlMap& root, std::vector<std::string>* notes) {
   // A throw-away read of the design (the real read follows, with the filled-in tree) for L and U.
   const YAML::Node copy = YAML::Clone(raw);
   YamlMap probe(copy, "", root.file(), YAML::Node(YAML::NodeType::Map));
-  const eval::DesignCase d = LoadDesignCase(probe, root.file(), "design");
+  eval::DesignCase d;
+  try {
+    d = LoadDesignCase(probe, root.file(), "design");
+  } catch (const InputError&) {
+    return;  // the clone has no line numbers: the real read names the same fault with its line
+  }
   sk::FrequencySpec grid;
   try {
     grid = eval::DesignFrequencyGrid(d.hydrostatics.L_m, d.speed_m_s, d.water.g_m_s2);

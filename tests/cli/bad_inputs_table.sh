@@ -281,6 +281,33 @@ DESC='rao into a folder written by rao with another config'
 sed 's/sections: 20/sections: 24/' "$T/sw1.yaml" > "$T/sw1_24.yaml"
 run other_config 1 "run with a different config (first difference: key 'solver.sections': '20' before, now '24')" - -- rao "$T/sw1_24.yaml" --out "$T/o53"
 
+DESC='`coefficients` with `path: time_marching` (no periodic steady state to take coefficients from)'
+w coef_marching "hull: { parametric: { $P } }
+speed: { kn: 40 }
+solver: { path: time_marching, sections: 10, panels: 6, frequencies: { lambda_over_L: [1.0, 2.0] } }"
+run coef_marching 1 "path: time_marching marches one history and has none" - -- coefficients "$T/coef_marching.yaml" --out "$T/o54"
+DESC='`resistance` from a speed of zero'
+w res_zero "hull: { parametric: { $P } }
+resistance: { speed_range_kn: { from: 0, to: 45, step: 2.5 } }"
+run res_zero 1 "speed must be > 0" - -- resistance "$T/res_zero.yaml" --out "$T/o55"
+DESC='`resistance` with a form factor 1 + k below 1'
+w res_k "hull: { parametric: { $P } }
+resistance: { speed_range_kn: { from: 10, to: 45, step: 2.5 }, form_factor: 0.5 }"
+run res_form_factor 1 "1 + k must be in [1, 2]" - -- resistance "$T/res_k.yaml" --out "$T/o56"
+DESC='`design` of a hull config without a speed'
+w design_nospeed "hull: { parametric: { $P } }"
+run design_no_speed 1 "missing required key 'speed'" - -- design "$T/design_nospeed.yaml" --out "$T/o57"
+DESC='`design` in a sea of zero-crossing period 1 s'
+w design_tz "hull: { parametric: { $P } }
+speed: { kn: 40 }
+seas: [ { spectrum: jonswap, Hs_m: 3, Tz_s: 1.0, gamma: 3.3 } ]"
+run design_tz 1 "zero-crossing period must be within 2..25 s" - -- design "$T/design_tz.yaml" --out "$T/o58"
+DESC='`design` with both `mass.kyy_m` and the campaigns'"'"' `mass.kyy_over_L`'
+w design_kyy "hull: { parametric: { $P } }
+speed: { kn: 40 }
+mass: { kyy_m: 5, kyy_over_L: 0.25 }"
+run design_kyy 1 "give kyy_m or kyy_over_L, not both" - -- design "$T/design_kyy.yaml" --out "$T/o59"
+
 # Not a row: without a mass block, hydrostatics.json's KG is the documented default, the draught.
 w nomass "hull: { parametric: { $P } }"
 if "$BIN" hull "$T/nomass.yaml" --out "$T/nomass" > /dev/null 2>&1; then
