@@ -14,11 +14,7 @@
 namespace hullopt::app {
 namespace {
 
-std::string Fmt(double v, int digits = 4) {
-  char b[64];
-  std::snprintf(b, sizeof b, "%.*g", digits, v);
-  return b;
-}
+std::string Fmt(double v, int digits = 4) { return io::FormatNumber(v, digits); }
 
 SingleDesign Evaluate(const std::string& file, const std::string& name, const std::string& command) {
   io::YamlMap root = io::YamlMap::LoadFile(file);

@@ -22,11 +22,7 @@
 namespace hullopt::app {
 namespace {
 
-std::string Fmt(double v, int digits = 4) {
-  char b[64];
-  std::snprintf(b, sizeof b, "%.*g", digits, v);
-  return b;
-}
+std::string Fmt(double v, int digits = 4) { return io::FormatNumber(v, digits); }
 
 void AddReport(const std::string& out, const std::string& config, const YAML::Node& resolved,
                const eval::DesignCase& dc, const io::EvaluatedDesign& d, const std::vector<std::string>& notes,

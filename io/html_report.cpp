@@ -1,5 +1,6 @@
 #include "io/html_report.h"
 
+#include <cstdio>
 #include <fstream>
 #include <sstream>
 
@@ -38,6 +39,12 @@ std::string StripProlog(const std::string& svg, int figure) {
 }
 
 }  // namespace
+
+std::string FormatNumber(double v, int digits) {
+  char b[64];
+  std::snprintf(b, sizeof b, "%.*g", digits, v);
+  return b;
+}
 
 std::string HtmlEscape(const std::string& text) {
   std::string out;

@@ -9,6 +9,8 @@ namespace hullopt::io {
 
 /// Text with &, <, >, " and ' replaced by their entities.
 std::string HtmlEscape(const std::string& text);
+/// A number for a report table: `digits` significant digits (%g).
+std::string FormatNumber(double v, int digits = 4);
 
 class HtmlReport {
  public:
