@@ -70,7 +70,9 @@ void AddReport(const std::string& out, const std::string& config, const YAML::No
 
 void RunDesign(const std::string& config, const std::string& out) {
   io::YamlMap root = io::YamlMap::LoadFile(config);
-  const std::string name = std::filesystem::path(config).stem().string();
+  // Recorded in config.resolved.yaml, so that a re-run keeps the design's name.
+  const std::string name = root.String("name", std::filesystem::path(config).stem().string());
+  if (name.empty()) root.Fail("name", "must not be empty");
   SingleDesign sd = EvaluateSingleDesign(root, name, "design", true,
                                          [&] { CheckOutputDirConfig(out, "design", root.resolved()); });
   const eval::DesignCase& dc = sd.design;

@@ -23,7 +23,8 @@ explore examples/explore_analytic_demo.yaml
 calibrate examples/calibrate_delft372.yaml
 calibrate examples/calibrate_synthetic.yaml
 resistance examples/resistance_delft372.yaml
-resistance examples/resistance_catamaran.yaml"
+resistance examples/resistance_catamaran.yaml
+design configs/delft372_offsets.yaml"
 
 example_tree() {
   local dest="$1"
