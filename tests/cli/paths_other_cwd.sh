@@ -69,5 +69,5 @@ printf 'designs:\n  - { config: designs/d372.yaml, name: d372 }\nseas:\n  - { sp
   > "$T/nest/study.yaml"
 (cd "$T/elsewhere" && "$BIN" evaluate ../nest/study.yaml --out nest > "$T/nest.log" 2>&1) ||
   { echo "FAIL nested config's own paths: $(tail -1 "$T/nest.log")"; fail=1; }
-[ $fail -eq 0 ] && echo "ok: $i runs of 9 commands from another working folder; 10 old-rule paths refused"
+[ $fail -eq 0 ] && echo "ok: $i runs of $(echo "$RUNS" | cut -d" " -f1 | sort -u | wc -l) commands from another working folder; 10 old-rule paths refused"
 exit $fail

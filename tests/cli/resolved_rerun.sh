@@ -77,5 +77,5 @@ done <<< "$RUNS"
 for c in hull section rao coefficients evaluate optimize explore calibrate resistance; do
   grep -q "^$c " <<< "$RUNS" || { echo "FAIL: no run of $c"; fail=1; }
 done
-[ $fail -eq 0 ] && echo "ok: $i runs of 9 commands re-run from config.resolved.yaml; $compared output files compared"
+[ $fail -eq 0 ] && echo "ok: $i runs of $(echo "$RUNS" | cut -d" " -f1 | sort -u | wc -l) commands re-run from config.resolved.yaml; $compared output files compared"
 exit $fail
