@@ -74,7 +74,7 @@ while read -r cmd cfg; do
     { echo "FAIL $name: config.resolved.yaml refused in its own folder: $(tail -1 "$T/$name.same.log")"; fail=1; }
 done <<< "$RUNS"
 [ "$i" -ge 18 ] || { echo "FAIL: only $i runs"; fail=1; }
-for c in hull section rao coefficients evaluate optimize explore calibrate resistance; do
+for c in hull section rao coefficients evaluate optimize explore calibrate resistance design; do
   grep -q "^$c " <<< "$RUNS" || { echo "FAIL: no run of $c"; fail=1; }
 done
 [ $fail -eq 0 ] && echo "ok: $i runs of $(echo "$RUNS" | cut -d" " -f1 | sort -u | wc -l) commands re-run from config.resolved.yaml; $compared output files compared"
