@@ -109,6 +109,18 @@ SolverConfig ParseSolverConfig(YamlMap& s, bool frequencies_required) {
   return c;
 }
 
+double ReadKyyOverL(YamlMap& mass, double default_value) {
+  const double r = mass.Number("kyy_over_L", default_value);
+  if (!(r > 0.05 && r < 0.5)) mass.Fail("kyy_over_L", "must be within 0.05..0.5");
+  return r;
+}
+
+double ReadKgOverT(YamlMap& mass, double default_value) {
+  const double r = mass.Number("kg_over_T", default_value);
+  if (!(r > 0 && r < 10)) mass.Fail("kg_over_T", "must be within 0..10");
+  return r;
+}
+
 hull::MassProperties ParseMassConfig(YamlMap& m, const hull::Hydrostatics& hs,
                                      std::vector<std::string>* warnings) {
   hull::MassProperties p;
@@ -125,17 +137,13 @@ hull::MassProperties ParseMassConfig(YamlMap& m, const hull::Hydrostatics& hs,
   if (m.Has("kyy_over_L") && m.Has("kyy_m")) m.Fail("kyy_over_L", "give kyy_m or kyy_over_L, not both");
   if (m.Has("kg_over_T") && m.Has("kg_m")) m.Fail("kg_over_T", "give kg_m or kg_over_T, not both");
   if (m.Has("kyy_over_L")) {
-    const double r = m.Number("kyy_over_L");
-    if (!(r > 0.05 && r < 0.5)) m.Fail("kyy_over_L", "must be within 0.05..0.5");
-    p.kyy_m = r * hs.L_m;
+    p.kyy_m = ReadKyyOverL(m, eval::kDefaultKyyOverL) * hs.L_m;
   } else {
     p.kyy_m = m.Number("kyy_m", eval::kDefaultKyyOverL * hs.L_m);
     if (!(p.kyy_m > 0.0)) m.Fail("kyy_m", "must be > 0 (typically 0.25 L)");
   }
   if (m.Has("kg_over_T")) {
-    const double r = m.Number("kg_over_T");
-    if (!(r > 0 && r < 10)) m.Fail("kg_over_T", "must be within 0..10");
-    p.kg_m = r * hs.T_m;
+    p.kg_m = ReadKgOverT(m, eval::kDefaultKgOverT) * hs.T_m;
   } else {
     p.kg_m = m.Number("kg_m", eval::kDefaultKgOverT * hs.T_m);
   }

@@ -44,6 +44,11 @@ using SolverConfig = eval::SolverSettings;
 /// Throws InputError "file:line: key 'solver.x' = v: rule".
 SolverConfig ParseSolverConfig(YamlMap& solver, bool frequencies_required = true);
 
+/// The campaigns' mass ratios: k_yy / L in (0.05, 0.5) and KG / T in (0, 10). Each reads `key` (default
+/// `default_value`) and fails naming the key and the rule outside its range.
+double ReadKyyOverL(YamlMap& mass, double default_value);
+double ReadKgOverT(YamlMap& mass, double default_value);
+
 /// Reads `mass` with defaults from the hydrostatics (recorded in the resolved config). Throws InputError for
 /// non-positive mass or radius of gyration, an LCG outside the hull's length, and the refusals of the mass
 /// plausibility rules (parametric_hull/plausibility.h): a mass more than 2 % from the displaced mass (unless

@@ -5,6 +5,7 @@
 #include "evaluation/msi_evaluator.h"
 #include "io/design_config.h"
 #include "io/input_error.h"
+#include "io/motion_config.h"
 #include "io/resistance_config.h"
 #include "io/seas_config.h"
 
@@ -34,10 +35,8 @@ std::unique_ptr<opt::Evaluator> ReadMsiObjective(YamlMap& root, YamlMap& objecti
   objective.Finish();
   o.evaluation.msi = ReadMsiOptions(root);
   YamlMap mass = root.MapOrEmpty("mass");
-  const double kyy_over_L = mass.Number("kyy_over_L", 0.25);
-  const double kg_over_T = mass.Number("kg_over_T", 1.0);
-  if (!(kyy_over_L > 0.05 && kyy_over_L < 0.5)) mass.Fail("kyy_over_L", "must be within 0.05..0.5");
-  if (!(kg_over_T > 0 && kg_over_T < 10)) mass.Fail("kg_over_T", "must be within 0..10");
+  const double kyy_over_L = ReadKyyOverL(mass, eval::kDefaultKyyOverL);
+  const double kg_over_T = ReadKgOverT(mass, eval::kDefaultKgOverT);
   mass.Finish();
   eval::DesignBasis basis;
   o.resistance = ParseResistanceConfig(root, false).options;
