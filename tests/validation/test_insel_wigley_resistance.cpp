@@ -1,5 +1,5 @@
 // Calm-water resistance of Insel's (1990) Wigley model C2-FX (L = 1.8 m, L/B = 10, B/T = 1.6, fixed in trim
-// and sinkage) measured in the Southampton tank, monohull and catamaran at S/L = 0.3 and 0.5
+// and sinkage) measured in the Southampton tank, monohull and catamaran at S/L = 0.2, 0.3, 0.4 and 0.5
 // (data/insel1990/SOURCE.md), against hullopt's prediction: ITTC-1957 friction with the default 1 + k = 1
 // plus Michell's wave resistance, fresh water at 15 °C.
 #include <catch2/catch.hpp>
@@ -87,6 +87,29 @@ TEST_CASE("Insel's Wigley model: measured C_T against the thin-ship prediction, 
     CHECK(f->mean <= kMeanTol);
     CHECK(f->worst <= kWorstBound);
   }
+}
+
+// The issue's criterion as it stands, set before the comparison: C_T within 10 % at every point of Fn 0.4-0.8,
+// and in the mean.
+constexpr double kIssueTol = 0.10;
+
+TEST_CASE("Insel's Wigley catamaran at S/L = 0.4: measured C_T against the thin-ship prediction", "[validation]") {
+  const auto cat = ReadPoints("wigley_c2fx_catamaran_ct.csv", true);
+  const Misfit c4 = Compare(test::WigleyCatamaran(L, B, T, 0.4 * L, 41, 41), cat, 0.4, "catamaran S/L = 0.4");
+  CHECK(c4.n == 21);
+  CHECK(c4.mean <= kIssueTol);
+  CHECK(c4.worst <= kIssueTol);
+}
+
+TEST_CASE("Insel's Wigley catamaran at S/L = 0.2: measured C_T against the thin-ship prediction",
+          "[validation][!mayfail]") {
+  // Markers only up to Fn 0.59. [!mayfail]: the closest spacing misses the criterion (thin-ship theory
+  // over-predicts the hump interference, +27 % at Fn 0.43; docs/resistance.md); reported, not hidden.
+  const auto cat = ReadPoints("wigley_c2fx_catamaran_ct.csv", true);
+  const Misfit c2 = Compare(test::WigleyCatamaran(L, B, T, 0.2 * L, 41, 41), cat, 0.2, "catamaran S/L = 0.2");
+  CHECK(c2.n == 11);
+  CHECK(c2.mean <= kIssueTol);
+  CHECK(c2.worst <= kIssueTol);
 }
 
 TEST_CASE("Insel's thin-ship interference curve of the Wigley catamaran, S/L = 0.2", "[validation][!mayfail]") {
