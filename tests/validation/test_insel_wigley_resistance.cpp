@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <fstream>
 #include <sstream>
 #include <string>
@@ -131,5 +132,29 @@ TEST_CASE("Insel's thin-ship interference curve of the Wigley catamaran, S/L = 0
     std::printf("  %.2f   %.3f      %.3f\n", p.Fn, p.C_T, tau);
     CHECK(std::fabs(tau - p.C_T) <= kPointTol);
     if (p.Fn == 0.45) CHECK(tau / p.C_T == Approx(1.0).margin(kHumpTol));
+  }
+}
+
+TEST_CASE("Insel's thin-ship interference curves of the Wigley catamaran, S/L = 0.3, 0.4, 0.5", "[validation]") {
+  // The same criteria as at S/L = 0.2, set before the comparison: 0.15 absolute per anchor, and the main hump
+  // (the anchor of Insel's largest tau) within 10 %.
+  constexpr double kPointTol = 0.15, kHumpTol = 0.10;
+  const res::ResistanceOptions options;
+  const res::CalmWaterResistance mono(test::WigleyHull(L, B, T, 41, 41), options);
+  for (const char* sl : {"03", "04", "05"}) {
+    const double s_over_l = std::atof(sl) / 10.0;
+    const auto pts = ReadPoints(std::string("wigley_c2_theory_interference_sl") + sl + ".csv", false);
+    REQUIRE(pts.size() == 9);
+    const res::CalmWaterResistance cat(test::WigleyCatamaran(L, B, T, s_over_l * L, 41, 41), options);
+    const Point hump = *std::max_element(pts.begin(), pts.end(),
+                                         [](const Point& a, const Point& b) { return a.C_T < b.C_T; });
+    std::printf("interference S/L = %.1f\n   Fn    tau Insel  tau hullopt\n", s_over_l);
+    for (const Point& p : pts) {  // Point.C_T holds tau here
+      const double U = p.Fn * std::sqrt(g * L);
+      const double tau = cat.At(U, rho, g).R_W_N / (2.0 * mono.At(U, rho, g).R_W_N);
+      std::printf("  %.2f   %.3f      %.3f\n", p.Fn, p.C_T, tau);
+      CHECK(std::fabs(tau - p.C_T) <= kPointTol);
+      if (p.Fn == hump.Fn) CHECK(tau / p.C_T == Approx(1.0).margin(kHumpTol));
+    }
   }
 }
