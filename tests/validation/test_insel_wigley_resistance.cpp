@@ -7,12 +7,11 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
-#include <fstream>
-#include <sstream>
 #include <string>
 #include <vector>
 
 #include "resistance/calm_water_resistance.h"
+#include "support/data_table.h"
 #include "support/wigley_hull.h"
 
 using namespace hullopt;
@@ -25,20 +24,12 @@ struct Point {
 };
 
 std::vector<Point> ReadPoints(const std::string& file, bool has_spacing) {
-  std::ifstream in(std::string(HULLOPT_SOURCE_DIR) + "/data/insel1990/" + file);
-  REQUIRE(in.good());
+  const auto rows = test::ReadDataTable("insel1990/" + file);
+  REQUIRE(!rows.empty());
   std::vector<Point> out;
-  std::string line;
-  bool header = true;
-  while (std::getline(in, line)) {
-    if (line.empty() || line[0] == '#') continue;
-    if (header) { header = false; continue; }
-    std::replace(line.begin(), line.end(), ',', ' ');
-    std::istringstream row(line);
-    Point p{0.0, 0.0, 0.0};
-    if (has_spacing) row >> p.s_over_l;
-    row >> p.Fn >> p.C_T;
-    out.push_back(p);
+  for (const auto& r : rows) {
+    REQUIRE(r.size() == (has_spacing ? 3u : 2u));
+    out.push_back(has_spacing ? Point{r[0], r[1], r[2]} : Point{0.0, r[0], r[1]});
   }
   return out;
 }

@@ -3,15 +3,13 @@
 // integral on the hull's stations at the campaign resolution (41 stations, default options) and at a fine
 // resolution, C_W on hullopt's own wetted surface.
 #include <catch2/catch.hpp>
-#include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <fstream>
-#include <sstream>
 #include <string>
 #include <vector>
 
 #include "resistance/calm_water_resistance.h"
+#include "support/data_table.h"
 #include "support/wigley_hull.h"
 
 using namespace hullopt;
@@ -24,20 +22,10 @@ struct Published {
 };
 
 std::vector<Published> ReadPublished() {
-  std::ifstream in(std::string(HULLOPT_SOURCE_DIR) + "/data/doctors-beck-1987/wigley_thin_ship_cw.csv");
-  REQUIRE(in.good());
   std::vector<Published> out;
-  std::string line;
-  bool header = true;
-  while (std::getline(in, line)) {
-    if (line.empty() || line[0] == '#') continue;
-    if (header) { header = false; continue; }
-    std::replace(line.begin(), line.end(), ',', ' ');
-    std::istringstream row(line);
-    Published p{0.0, 0.0};
-    row >> p.Fn >> p.C_W;
-    p.C_W *= 1e-3;
-    out.push_back(p);
+  for (const auto& r : test::ReadDataTable("doctors-beck-1987/wigley_thin_ship_cw.csv")) {
+    REQUIRE(r.size() == 2);
+    out.push_back({r[0], 1e-3 * r[1]});
   }
   return out;
 }
