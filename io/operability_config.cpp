@@ -64,8 +64,10 @@ OperabilityConfig ParseOperability(YamlMap& root, const std::vector<sk::Passenge
   c.present = true;
   YamlMap m = root.Map("operability");
   c.scatter_csv = ConfigFilePath(m, "scatter_csv");
-  const std::string unit = m.Choice("probabilities", {"fraction", "percent", "per_mille"}, "fraction");
-  const double scale = unit == "fraction" ? 1.0 : (unit == "percent" ? 0.01 : 0.001);
+  const std::string unit =
+      m.Choice("probabilities", {"fraction", "percent", "per_mille", "per_100000"}, "fraction");
+  // per_100000: occurrences per 100 000 observations, the unit of IACS Rec. 34 and Global Wave Statistics tables.
+  const double scale = unit == "fraction" ? 1.0 : unit == "percent" ? 0.01 : unit == "per_mille" ? 0.001 : 1e-5;
   const std::string spectrum = m.Choice("spectrum", {"jonswap", "bretschneider"}, "jonswap");
   const double gamma = m.Number("gamma", 3.3);
   if (spectrum == "bretschneider" && m.Has("gamma")) m.Fail("gamma", "only for spectrum: jonswap");

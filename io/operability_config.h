@@ -3,7 +3,7 @@
 //
 //   operability:
 //     scatter_csv: data/route/scatter.csv     # relative to the working folder or the config
-//     probabilities: fraction                 # fraction | percent | per_mille (how the table is printed)
+//     probabilities: fraction                 # fraction | percent | per_mille | per_100000 (how the table is printed)
 //     spectrum: jonswap                       # jonswap | bretschneider, gamma: 3.3 (JONSWAP only)
 //     criteria:                               # non-empty list
 //       - { msi_max_pct: 20, position: mean }

@@ -1,17 +1,17 @@
 // Calm-water resistance of Insel's (1990) Wigley model C2-FX (L = 1.8 m, L/B = 10, B/T = 1.6, fixed in trim
-// and sinkage) measured in the Southampton tank, monohull and catamaran at S/L = 0.3 and 0.5
+// and sinkage) measured in the Southampton tank, monohull and catamaran at S/L = 0.2, 0.3, 0.4 and 0.5
 // (data/insel1990/SOURCE.md), against hullopt's prediction: ITTC-1957 friction with the default 1 + k = 1
 // plus Michell's wave resistance, fresh water at 15 °C.
 #include <catch2/catch.hpp>
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <fstream>
-#include <sstream>
+#include <cstdlib>
 #include <string>
 #include <vector>
 
 #include "resistance/calm_water_resistance.h"
+#include "support/data_table.h"
 #include "support/wigley_hull.h"
 
 using namespace hullopt;
@@ -24,20 +24,12 @@ struct Point {
 };
 
 std::vector<Point> ReadPoints(const std::string& file, bool has_spacing) {
-  std::ifstream in(std::string(HULLOPT_SOURCE_DIR) + "/data/insel1990/" + file);
-  REQUIRE(in.good());
+  const auto rows = test::ReadDataTable("insel1990/" + file);
+  REQUIRE(!rows.empty());
   std::vector<Point> out;
-  std::string line;
-  bool header = true;
-  while (std::getline(in, line)) {
-    if (line.empty() || line[0] == '#') continue;
-    if (header) { header = false; continue; }
-    std::replace(line.begin(), line.end(), ',', ' ');
-    std::istringstream row(line);
-    Point p{0.0, 0.0, 0.0};
-    if (has_spacing) row >> p.s_over_l;
-    row >> p.Fn >> p.C_T;
-    out.push_back(p);
+  for (const auto& r : rows) {
+    REQUIRE(r.size() == (has_spacing ? 3u : 2u));
+    out.push_back(has_spacing ? Point{r[0], r[1], r[2]} : Point{0.0, r[0], r[1]});
   }
   return out;
 }
@@ -89,6 +81,29 @@ TEST_CASE("Insel's Wigley model: measured C_T against the thin-ship prediction, 
   }
 }
 
+// The issue's criterion as it stands, set before the comparison: C_T within 10 % at every point of Fn 0.4-0.8,
+// and in the mean.
+constexpr double kIssueTol = 0.10;
+
+TEST_CASE("Insel's Wigley catamaran at S/L = 0.4: measured C_T against the thin-ship prediction", "[validation]") {
+  const auto cat = ReadPoints("wigley_c2fx_catamaran_ct.csv", true);
+  const Misfit c4 = Compare(test::WigleyCatamaran(L, B, T, 0.4 * L, 41, 41), cat, 0.4, "catamaran S/L = 0.4");
+  CHECK(c4.n == 21);
+  CHECK(c4.mean <= kIssueTol);
+  CHECK(c4.worst <= kIssueTol);
+}
+
+TEST_CASE("Insel's Wigley catamaran at S/L = 0.2: measured C_T against the thin-ship prediction",
+          "[validation][!mayfail]") {
+  // Markers only up to Fn 0.59. [!mayfail]: the closest spacing misses the criterion (thin-ship theory
+  // over-predicts the hump interference, +27 % at Fn 0.43; docs/resistance.md); reported, not hidden.
+  const auto cat = ReadPoints("wigley_c2fx_catamaran_ct.csv", true);
+  const Misfit c2 = Compare(test::WigleyCatamaran(L, B, T, 0.2 * L, 41, 41), cat, 0.2, "catamaran S/L = 0.2");
+  CHECK(c2.n == 11);
+  CHECK(c2.mean <= kIssueTol);
+  CHECK(c2.worst <= kIssueTol);
+}
+
 TEST_CASE("Insel's thin-ship interference curve of the Wigley catamaran, S/L = 0.2", "[validation][!mayfail]") {
   // Insel's curve is a finite-canal calculation (tank 3.7 m wide, 1.85 m deep), hullopt's the open-sea
   // Michell integral: the canal's transverse modes make his curve jump by up to 0.1 between neighbouring
@@ -108,5 +123,29 @@ TEST_CASE("Insel's thin-ship interference curve of the Wigley catamaran, S/L = 0
     std::printf("  %.2f   %.3f      %.3f\n", p.Fn, p.C_T, tau);
     CHECK(std::fabs(tau - p.C_T) <= kPointTol);
     if (p.Fn == 0.45) CHECK(tau / p.C_T == Approx(1.0).margin(kHumpTol));
+  }
+}
+
+TEST_CASE("Insel's thin-ship interference curves of the Wigley catamaran, S/L = 0.3, 0.4, 0.5", "[validation]") {
+  // The same criteria as at S/L = 0.2, set before the comparison: 0.15 absolute per anchor, and the main hump
+  // (the anchor of Insel's largest tau) within 10 %.
+  constexpr double kPointTol = 0.15, kHumpTol = 0.10;
+  const res::ResistanceOptions options;
+  const res::CalmWaterResistance mono(test::WigleyHull(L, B, T, 41, 41), options);
+  for (const char* sl : {"03", "04", "05"}) {
+    const double s_over_l = std::atof(sl) / 10.0;
+    const auto pts = ReadPoints(std::string("wigley_c2_theory_interference_sl") + sl + ".csv", false);
+    REQUIRE(pts.size() == 9);
+    const res::CalmWaterResistance cat(test::WigleyCatamaran(L, B, T, s_over_l * L, 41, 41), options);
+    const Point hump = *std::max_element(pts.begin(), pts.end(),
+                                         [](const Point& a, const Point& b) { return a.C_T < b.C_T; });
+    std::printf("interference S/L = %.1f\n   Fn    tau Insel  tau hullopt\n", s_over_l);
+    for (const Point& p : pts) {  // Point.C_T holds tau here
+      const double U = p.Fn * std::sqrt(g * L);
+      const double tau = cat.At(U, rho, g).R_W_N / (2.0 * mono.At(U, rho, g).R_W_N);
+      std::printf("  %.2f   %.3f      %.3f\n", p.Fn, p.C_T, tau);
+      CHECK(std::fabs(tau - p.C_T) <= kPointTol);
+      if (p.Fn == hump.Fn) CHECK(tau / p.C_T == Approx(1.0).margin(kHumpTol));
+    }
   }
 }
