@@ -27,6 +27,7 @@ nlohmann::json NamedValues(const std::vector<std::string>& names, const std::vec
 
 CampaignRunner::CampaignRunner(CampaignKind& kind, const CampaignCliOptions& options)
     : kind_(kind),
+      words_(kind.Wording()),
       options_(options),
       wall0_(std::chrono::steady_clock::now()),
       campaign_(LoadCampaign(options.config, kind.ConfigCommand())) {}
@@ -38,7 +39,7 @@ void CampaignRunner::Add(const opt::EvaluationRecord& rec) {
 
 io::InputError CampaignRunner::ResumeError(const opt::ReplayMismatch& e) const {
   return io::InputError(journal_->path() + ": cannot resume, the log does not match this campaign's " +
-                        kind_.ReplayedSequence() + ": " + e.what() + "; delete the file to start over");
+                        words_.sequence + ": " + e.what() + "; delete the file to start over");
 }
 
 std::vector<nlohmann::json> CampaignRunner::Split(int units, const UnitWork& work) {
@@ -78,7 +79,7 @@ std::vector<nlohmann::json> CampaignRunner::Split(int units, const UnitWork& wor
 }
 
 void CampaignRunner::Start() {
-  const std::string command = kind_.Command();
+  const std::string& command = words_.command;
   CheckOutputDirCommand(options_.out, command);
   kind_.CheckOptions();
   threads_ = ResolveThreads(options_.threads);
@@ -97,7 +98,7 @@ void CampaignRunner::Start() {
   opt::Evaluator& ev = evaluator();
   constraints_ = std::make_unique<opt::ConstraintSet>(def, ev.QuantityNames());
   io::HistoryLayout layout{def.VariableNames(), ev.SeaNames(), constraints_->ReportedQuantities()};
-  journal_ = std::make_unique<CampaignJournal>(options_.out, kind_.LogFile(), layout, campaign_.config_hash,
+  journal_ = std::make_unique<CampaignJournal>(options_.out, words_.log_file, layout, campaign_.config_hash,
                                                campaign_.resolved, *constraints_, ev.QuantityNames().size());
   journal_->Verify(ev, def);
   progress_ = std::make_unique<Progress>(command, size.evaluations, rank_ == 0 && !options_.quiet);
@@ -111,13 +112,13 @@ void CampaignRunner::Start() {
   if (rank_ == 0 && !options_.quiet && resumed > 0) {
     std::fprintf(
         stderr, "%s: resuming: %ld %s in %s are replayed, not recomputed%s\n", command.c_str(), resumed,
-        kind_.ResumedNoun().c_str(), journal_->path().c_str(),
+        words_.resumed.c_str(), journal_->path().c_str(),
         journal_->truncated_tail() ? " (an incomplete last row from an interrupted run was discarded)" : "");
   }
 }
 
 void CampaignRunner::Finish() {
-  const std::string command = kind_.Command();
+  const std::string& command = words_.command;
   const opt::CampaignDefinition& def = definition();
   const auto& recs = journal_->records();
   progress_->Finish(static_cast<long>(recs.size()), journal_->replayed());
@@ -146,13 +147,33 @@ void CampaignRunner::Finish() {
   io::WriteJson(OutPath(options_.out, "summary.json"), s);
   kind_.WritePlots(*this);
   if (best >= 0) {
-    const std::string comment = kind_.BestComment(*this, best);
+    char comment[200];
+    std::snprintf(comment, sizeof comment, "hullopt %s: %s of %s (evaluation %ld, objective %.10g); %s",
+                  command.c_str(), words_.best.c_str(), options_.config.c_str(), best,
+                  recs[best].result.objective, words_.best_base.c_str());
     io::WriteBestYaml(OutPath(options_.out, "best.yaml"), campaign_.raw, campaign_.config.block,
                       def.VariableNames(), campaign_.config.start_source, recs[best].x,
-                      resolution_warning.empty() ? comment : comment + "\n# WARNING: " + resolution_warning);
+                      resolution_warning.empty() ? std::string(comment)
+                                                 : std::string(comment) + "\n# WARNING: " + resolution_warning);
     WriteCampaignReport(options_.out, command, options_.config);
   }
   if (!options_.quiet) kind_.PrintResult(*this, best, s);
+}
+
+CLI::App* AddCampaignCommand(CLI::App& app, const CommandText& text,
+                             std::function<void(const CampaignCliOptions&)> run,
+                             const std::function<void(CLI::App*)>& more_options) {
+  auto o = std::make_shared<CampaignCliOptions>();
+  auto* cmd = AddConfigCommand(app, text, [o, run = std::move(run)](const std::string& config, const std::string& out) {
+    CampaignCliOptions one = *o;
+    one.config = config;
+    one.out = out;
+    run(one);
+  });
+  cmd->add_option("--threads", o->threads, "OpenMP threads per process (0 = OpenMP default)");
+  if (more_options) more_options(cmd);
+  cmd->add_flag("--quiet", o->quiet, "no progress output");
+  return cmd;
 }
 
 void RunCampaign(CampaignKind& kind, const CampaignCliOptions& options) {

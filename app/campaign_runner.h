@@ -18,6 +18,7 @@
 
 #include "app/campaign_journal.h"
 #include "app/campaign_setup.h"
+#include "app/commands.h"
 #include "app/progress.h"
 #include "io/campaign_config.h"
 #include "io/input_error.h"
@@ -44,20 +45,23 @@ struct CampaignSize {
 class CampaignRunner;
 
 /// One kind of campaign. The runner calls, in this order: Size, Accept (collective), Run (collective), and on
-/// rank 0 after the evaluations Summarise, WritePlots, BestComment, PrintResult.
+/// rank 0 after the evaluations Summarise, WritePlots, PrintResult.
 class CampaignKind {
  public:
   virtual ~CampaignKind() = default;
-  /// Command name ("optimize"): progress label, messages, summary "command", report title.
-  virtual std::string Command() const = 0;
+  /// The names and words of the kind's files and messages.
+  struct Words {
+    std::string command;   ///< "optimize": progress label, messages, summary "command", report title
+    std::string log_file;  ///< the log in the output folder ("history.csv")
+    std::string resumed;   ///< what a resumed run says it replays ("evaluations")
+    std::string sequence;  ///< what the log must match to be resumed ("sequence")
+    std::string best;      ///< best.yaml's comment: what the best is ("best design") ...
+    std::string best_base; ///< ... and what the file holds ("base config with the best variable values")
+  };
+  virtual Words Wording() const = 0;
   /// Which campaign block the config is read as.
   virtual io::CampaignCommand ConfigCommand() const = 0;
-  /// The log in the output folder ("history.csv").
-  virtual std::string LogFile() const = 0;
-  /// What a resumed run says it replays ("evaluations", "samples") and what the log must match ("sequence").
-  virtual std::string ResumedNoun() const = 0;
-  virtual std::string ReplayedSequence() const = 0;
-  /// Checks the kind's own command-line options (throws io::InputError); before anything else is resolved.
+  /// Checks the kind's own command-line options (throws io::InputError), once the config is loaded.
   virtual void CheckOptions() const {}
   virtual CampaignSize Size(const LoadedCampaign& campaign, int threads) const = 0;
   /// Logged evaluations a resumed run replays (for its message).
@@ -71,8 +75,6 @@ class CampaignKind {
   /// feasible design).
   virtual void Summarise(const CampaignRunner& runner, long best, nlohmann::json* summary) = 0;
   virtual void WritePlots(const CampaignRunner& runner) const = 0;
-  /// Rank 0: the comment at the top of best.yaml.
-  virtual std::string BestComment(const CampaignRunner& runner, long best) const = 0;
   /// Rank 0, unless quiet: the result lines on stdout.
   virtual void PrintResult(const CampaignRunner& runner, long best, const nlohmann::json& summary) const = 0;
 };
@@ -110,6 +112,7 @@ class CampaignRunner {
   void Finish();
 
   CampaignKind& kind_;
+  CampaignKind::Words words_;
   CampaignCliOptions options_;
   std::chrono::steady_clock::time_point wall0_;
   LoadedCampaign campaign_;
@@ -121,6 +124,12 @@ class CampaignRunner {
 
 /// Runs one campaign of the given kind end to end (collective under MPI). Throws io::InputError for bad input.
 void RunCampaign(CampaignKind& kind, const CampaignCliOptions& options);
+
+/// Registers a campaign command, `hullopt NAME CONFIG --out DIR --threads N [more options] --quiet`; run(options)
+/// runs under the output folder's lock. more_options adds the command's own options (after --threads).
+CLI::App* AddCampaignCommand(CLI::App& app, const CommandText& text,
+                             std::function<void(const CampaignCliOptions&)> run,
+                             const std::function<void(CLI::App*)>& more_options = nullptr);
 
 /// JSON object {names[i]: values[i]}.
 nlohmann::json NamedValues(const std::vector<std::string>& names, const std::vector<double>& values);

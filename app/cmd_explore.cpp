@@ -23,11 +23,10 @@ namespace {
 class ExploreCampaign : public CampaignKind {
  public:
   explicit ExploreCampaign(int chunk) : chunk_(chunk) {}
-  std::string Command() const override { return "explore"; }
+  Words Wording() const override {
+    return {"explore", "samples.csv", "samples", "samples", "best sample", "base config with its variable values"};
+  }
   io::CampaignCommand ConfigCommand() const override { return io::CampaignCommand::kExplore; }
-  std::string LogFile() const override { return "samples.csv"; }
-  std::string ResumedNoun() const override { return "samples"; }
-  std::string ReplayedSequence() const override { return "samples"; }
 
   void CheckOptions() const override {
     if (chunk_ < 0) throw io::InputError("--chunk " + std::to_string(chunk_) + ": must be >= 0 (0 = 2 x threads)");
@@ -123,15 +122,6 @@ class ExploreCampaign : public CampaignKind {
                           r.evaluator().ObjectiveLabel());
   }
 
-  std::string BestComment(const CampaignRunner& r, long best) const override {
-    char comment[200];
-    std::snprintf(comment, sizeof comment,
-                  "hullopt explore: best sample of %s (evaluation %ld, objective %.10g); base config with its "
-                  "variable values",
-                  r.options().config.c_str(), best, r.journal().records()[best].result.objective);
-    return comment;
-  }
-
   void PrintResult(const CampaignRunner& r, long best, const nlohmann::json& s) const override {
     const auto& recs = r.journal().records();
     std::printf("%zu samples (%zu feasible)", recs.size(), fx_.size());
@@ -148,23 +138,21 @@ class ExploreCampaign : public CampaignKind {
 }  // namespace
 
 void AddExploreCommand(CLI::App& app) {
-  auto o = std::make_shared<CampaignCliOptions>();
   auto chunk = std::make_shared<int>(0);
-  auto* cmd = app.add_subcommand(
-      "explore",
-      "Evaluate a Sobol or Latin-hypercube sample of the design space in parallel and estimate sensitivities "
-      "(resumable; mpirun -n N spreads samples over ranks)");
-  cmd->add_option("config", o->config, "campaign YAML (explore: or optimize: block, with samples and method)")
-      ->required();
-  cmd->add_option("--out", o->out, "output folder (samples.csv, summary.json, sensitivity.csv)")->required();
-  cmd->add_option("--threads", o->threads, "OpenMP threads per process (0 = OpenMP default)");
-  cmd->add_option("--chunk", *chunk, "samples per MPI rank and round (0 = 2 x threads)");
-  cmd->add_flag("--quiet", o->quiet, "no progress output");
-  cmd->callback([o, chunk] {
-    const OutputFolderGuard lock(o->out, "explore", o->config);
-    ExploreCampaign kind(*chunk);
-    RunCampaign(kind, *o);
-  });
+  AddCampaignCommand(
+      app,
+      {"explore",
+       "Evaluate a Sobol or Latin-hypercube sample of the design space in parallel and estimate sensitivities "
+       "(resumable; mpirun -n N spreads samples over ranks)",
+       "campaign YAML (explore: or optimize: block, with samples and method)", "config",
+       "output folder (samples.csv, summary.json, sensitivity.csv)"},
+      [chunk](const CampaignCliOptions& o) {
+        ExploreCampaign kind(*chunk);
+        RunCampaign(kind, o);
+      },
+      [chunk](CLI::App* cmd) {
+        cmd->add_option("--chunk", *chunk, "samples per MPI rank and round (0 = 2 x threads)");
+      });
 }
 
 }  // namespace hullopt::app

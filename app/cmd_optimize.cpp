@@ -37,11 +37,11 @@ nlohmann::json RecordJson(const opt::EvaluationRecord& rec, long evaluation, con
 // Evaluation 0 is the base design; then the multistart runs, one unit of work each.
 class OptimizeCampaign : public CampaignKind {
  public:
-  std::string Command() const override { return "optimize"; }
+  Words Wording() const override {
+    return {"optimize",    "history.csv", "evaluations", "sequence",
+            "best design", "base config with the best variable values"};
+  }
   io::CampaignCommand ConfigCommand() const override { return io::CampaignCommand::kOptimize; }
-  std::string LogFile() const override { return "history.csv"; }
-  std::string ResumedNoun() const override { return "evaluations"; }
-  std::string ReplayedSequence() const override { return "sequence"; }
 
   CampaignSize Size(const LoadedCampaign& lc, int) const override {
     const opt::CampaignDefinition& def = lc.config.definition;
@@ -129,15 +129,6 @@ class OptimizeCampaign : public CampaignKind {
                            def.UpperBounds(), r.evaluator().ObjectiveLabel());
   }
 
-  std::string BestComment(const CampaignRunner& r, long best) const override {
-    char comment[200];
-    std::snprintf(comment, sizeof comment,
-                  "hullopt optimize: best design of %s (evaluation %ld, objective %.10g); base config with the "
-                  "best variable values",
-                  r.options().config.c_str(), best, r.journal().records()[best].result.objective);
-    return comment;
-  }
-
   void PrintResult(const CampaignRunner& r, long best, const nlohmann::json&) const override {
     const auto& recs = r.journal().records();
     if (best >= 0) {
@@ -164,26 +155,22 @@ void RunOptimize(const CampaignCliOptions& o) {
 }  // namespace
 
 void AddOptimizeCommand(CLI::App& app) {
-  auto o = std::make_shared<CampaignCliOptions>();
-  auto* cmd = app.add_subcommand(
-      "optimize",
-      "Minimise the campaign objective over the free design variables (NLopt; resumable: re-run the same "
-      "command to continue an interrupted campaign; mpirun -n N spreads multistart runs over ranks)");
-  cmd->add_option("config", o->config, "campaign YAML (optimize: block)")->required();
-  cmd->add_option("--out", o->out, "output folder (history.csv, best.yaml, summary.json)")->required();
-  cmd->add_option("--threads", o->threads, "OpenMP threads per process (0 = OpenMP default)");
-  cmd->add_flag("--quiet", o->quiet, "no progress output");
-  cmd->callback([o] {
-    // One lock on the campaign folder for the whole run (a Pareto sweep's runs live inside it).
-    const OutputFolderGuard lock(o->out, "optimize", o->config);
-    if (!HasParetoSweep(o->config)) return RunOptimize(*o);
-    RunParetoSweep(o->config, o->out, [o](const std::string& config, const std::string& out) {
-      CampaignCliOptions one = *o;
-      one.config = config;
-      one.out = out;
-      RunOptimize(one);
-    });
-  });
+  AddCampaignCommand(
+      app,
+      {"optimize",
+       "Minimise the campaign objective over the free design variables (NLopt; resumable: re-run the same "
+       "command to continue an interrupted campaign; mpirun -n N spreads multistart runs over ranks)",
+       "campaign YAML (optimize: block)", "config", "output folder (history.csv, best.yaml, summary.json)"},
+      // One lock on the campaign folder for the whole run (a Pareto sweep's runs live inside it).
+      [](const CampaignCliOptions& o) {
+        if (!HasParetoSweep(o.config)) return RunOptimize(o);
+        RunParetoSweep(o.config, o.out, [o](const std::string& config, const std::string& out) {
+          CampaignCliOptions one = o;
+          one.config = config;
+          one.out = out;
+          RunOptimize(one);
+        });
+      });
 }
 
 }  // namespace hullopt::app
