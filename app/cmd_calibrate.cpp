@@ -110,17 +110,11 @@ void RunCalibrate(const std::string& config_file, const std::string& out_dir) {
 }  // namespace
 
 void AddCalibrateCommand(CLI::App& app) {
-  auto* cmd = app.add_subcommand(
-      "calibrate",
-      "Fit the sectional damping coefficient Cs to measured heave and pitch RAOs (tank RAO CSV files)");
-  auto config = std::make_shared<std::string>();
-  auto out = std::make_shared<std::string>();
-  cmd->add_option("CONFIG", *config, "YAML config with a 'calibrate:' section")->required();
-  cmd->add_option("--out", *out, "output folder")->required();
-  cmd->callback([config, out] {
-    const OutputFolderGuard lock(*out, "calibrate", *config);
-    RunCalibrate(*config, *out);
-  });
+  AddConfigCommand(app,
+                   {"calibrate",
+                    "Fit the sectional damping coefficient Cs to measured heave and pitch RAOs (tank RAO CSV files)",
+                    "YAML config with a 'calibrate:' section", "CONFIG"},
+                   RunCalibrate);
 }
 
 }  // namespace hullopt::app

@@ -81,17 +81,11 @@ void RunCoefficients(const std::string& config_file, const std::string& out_dir)
 }  // namespace
 
 void AddCoefficientsCommand(CLI::App& app) {
-  auto* cmd = app.add_subcommand(
-      "coefficients", "heave-pitch added mass, damping and wave loads in head seas (coefficients.csv, .svg)");
-  auto config = std::make_shared<std::string>();
-  auto out = std::make_shared<std::string>();
-  cmd->add_option("config", *config, "YAML config (hull, mass, speed, water, solver, optional compare)")
-      ->required();
-  cmd->add_option("--out", *out, "output folder")->required();
-  cmd->callback([config, out] {
-    const OutputFolderGuard lock(*out, "coefficients", *config);
-    RunCoefficients(*config, *out);
-  });
+  AddConfigCommand(app,
+                   {"coefficients",
+                    "heave-pitch added mass, damping and wave loads in head seas (coefficients.csv, .svg)",
+                    "YAML config (hull, mass, speed, water, solver, optional compare)"},
+                   RunCoefficients);
 }
 
 }  // namespace hullopt::app

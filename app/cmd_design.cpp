@@ -128,17 +128,12 @@ void RunDesign(const std::string& config, const std::string& out) {
 }  // namespace
 
 void AddDesignCommand(CLI::App& app) {
-  auto* cmd = app.add_subcommand(
-      "design", "one hull through hydrostatics, RAOs, accelerations and MSI with documented defaults (report.html)");
-  auto config = std::make_shared<std::string>();
-  auto out = std::make_shared<std::string>();
-  cmd->add_option("config", *config, "YAML config with a hull: map (any hull config or a campaign's best.yaml)")
-      ->required();
-  cmd->add_option("--out", *out, "output folder")->required();
-  cmd->callback([config, out] {
-    const OutputFolderGuard lock(*out, "design", *config);
-    RunDesign(*config, *out);
-  });
+  AddConfigCommand(app,
+                   {"design",
+                    "one hull through hydrostatics, RAOs, accelerations and MSI with documented defaults "
+                    "(report.html)",
+                    "YAML config with a hull: map (any hull config or a campaign's best.yaml)"},
+                   RunDesign);
 }
 
 }  // namespace hullopt::app

@@ -292,17 +292,12 @@ void Run(const std::string& config_file, const std::string& out_dir) {
 }  // namespace
 
 void AddEvaluateCommand(CLI::App& app) {
-  auto* cmd = app.add_subcommand(
-      "evaluate",
-      "rms accelerations and motion sickness incidence in head seas (msi.csv, summary.json, plots)");
-  auto config = std::make_shared<std::string>();
-  auto out = std::make_shared<std::string>("out/evaluate");
-  cmd->add_option("config", *config, "YAML config (rao_csv or designs, seas, msi, positions)")->required();
-  cmd->add_option("--out", *out, "output folder")->capture_default_str();
-  cmd->callback([config, out] {
-    const OutputFolderGuard lock(*out, "evaluate", *config);
-    Run(*config, *out);
-  });
+  AddConfigCommand(app,
+                   {"evaluate",
+                    "rms accelerations and motion sickness incidence in head seas (msi.csv, summary.json, plots)",
+                    "YAML config (rao_csv or designs, seas, msi, positions)", "config", "output folder",
+                    "out/evaluate"},
+                   Run);
 }
 
 }  // namespace hullopt::app

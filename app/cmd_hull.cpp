@@ -93,18 +93,12 @@ void RunHull(const std::string& config, const std::string& out_dir) {
 }  // namespace
 
 void AddHullCommand(CLI::App& app) {
-  auto* cmd = app.add_subcommand("hull",
-                                 "Generate (parametric) or read (offsets CSV / STL) a hull and write "
-                                 "hydrostatics.json, offsets.csv and bodyplan.svg");
-  auto config = std::make_shared<std::string>();
-  auto out = std::make_shared<std::string>();
-  cmd->add_option("config", *config, "YAML config with a hull: map (and optional water:, speed:, mass:)")
-      ->required();
-  cmd->add_option("--out", *out, "output folder")->required();
-  cmd->callback([config, out] {
-    const OutputFolderGuard lock(*out, "hull", *config);
-    RunHull(*config, *out);
-  });
+  AddConfigCommand(app,
+                   {"hull",
+                    "Generate (parametric) or read (offsets CSV / STL) a hull and write hydrostatics.json, "
+                    "offsets.csv and bodyplan.svg",
+                    "YAML config with a hull: map (and optional water:, speed:, mass:)"},
+                   RunHull);
 }
 
 }  // namespace hullopt::app

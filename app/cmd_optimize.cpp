@@ -2,57 +2,31 @@
 // NLopt algorithm (multistart, constraints), resumable, spread over MPI ranks by multistart run.
 #include <nlohmann/json.hpp>
 
-#ifdef _OPENMP
-#include <omp.h>
-#endif
-
-#include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <memory>
 
-#include "app/campaign_journal.h"
-#include "app/campaign_setup.h"
-#include "app/campaign_report.h"
+#include "app/campaign_runner.h"
 #include "app/commands.h"
-#include "app/mpi_context.h"
 #include "app/output_dir.h"
 #include "app/pareto_sweep.h"
-#include "app/progress.h"
-#include "app/run_checks.h"
-#include "hullopt/version.h"
-#include "io/campaign_outputs.h"
 #include "io/campaign_plots.h"
-#include "io/input_error.h"
 #include "optimizer/nlopt_algorithms.h"
 #include "optimizer/nlopt_driver.h"
 
 namespace hullopt::app {
 namespace {
 
-struct OptimizeOptions {
-  std::string config;
-  std::string out;
-  int threads = 0;
-  bool quiet = false;
-};
-
-nlohmann::json Named(const std::vector<std::string>& names, const std::vector<double>& values) {
-  nlohmann::json j = nlohmann::json::object();
-  for (std::size_t i = 0; i < names.size() && i < values.size(); ++i) j[names[i]] = values[i];
-  return j;
-}
-
-nlohmann::json RecordJson(const opt::EvaluationRecord& rec, long evaluation,
-                          const opt::CampaignDefinition& def, const opt::Evaluator& ev,
-                          const opt::ConstraintSet& cs) {
+nlohmann::json RecordJson(const opt::EvaluationRecord& rec, long evaluation, const CampaignRunner& r) {
   nlohmann::json j;
   j["evaluation"] = evaluation;
-  j["variables"] = Named(def.VariableNames(), rec.x);
+  j["variables"] = NamedValues(r.definition().VariableNames(), rec.x);
   j["feasible"] = rec.feasible;
   if (rec.result.produced) {
     j["objective"] = rec.result.objective;
-    j["seas"] = Named(ev.SeaNames(), rec.result.sea_values);
-    j["constrained_quantities"] = Named(cs.ReportedQuantities(), cs.ReportedValues(rec.result));
+    j["seas"] = NamedValues(r.evaluator().SeaNames(), rec.result.sea_values);
+    j["constrained_quantities"] =
+        NamedValues(r.constraints().ReportedQuantities(), r.constraints().ReportedValues(rec.result));
   } else {
     j["objective"] = nullptr;
     j["refused"] = rec.result.error;
@@ -60,105 +34,65 @@ nlohmann::json RecordJson(const opt::EvaluationRecord& rec, long evaluation,
   return j;
 }
 
-void RunOptimize(const OptimizeOptions& o) {
-  const auto wall0 = std::chrono::steady_clock::now();
-  LoadedCampaign lc = LoadCampaign(o.config, io::CampaignCommand::kOptimize);
-  CheckOutputDirCommand(o.out, "optimize");
-  const opt::CampaignDefinition& def = lc.config.definition;
-  opt::Evaluator& evaluator = *lc.evaluator;
-  const int threads = ResolveThreads(o.threads);
-  CheckCampaignCost("optimize", lc.resolved, lc.config.block,
-                    1 + static_cast<long>(def.starts) *
-                            (def.stopping.max_evaluations + (def.polish_algorithm.empty() ? 0 : def.polish_max_evaluations)),
-                    lc.config.block + ".starts x max_evaluations", 1);
-#ifdef _OPENMP
-  omp_set_num_threads(threads);  // for the physics inside one evaluation
-#endif
-  const int rank = MpiRank(), size = MpiSize();
+// Evaluation 0 is the base design; then the multistart runs, one unit of work each.
+class OptimizeCampaign : public CampaignKind {
+ public:
+  Words Wording() const override {
+    return {"optimize",    "history.csv", "evaluations", "sequence",
+            "best design", "base config with the best variable values"};
+  }
+  io::CampaignCommand ConfigCommand() const override { return io::CampaignCommand::kOptimize; }
 
-  opt::ConstraintSet cs(def, evaluator.QuantityNames());
-  io::HistoryLayout layout{def.VariableNames(), evaluator.SeaNames(), cs.ReportedQuantities()};
-  CampaignJournal journal(o.out, "history.csv", layout, lc.config_hash, lc.resolved, cs, evaluator.QuantityNames().size());
-  journal.Verify(evaluator, def);
+  CampaignSize Size(const LoadedCampaign& lc, int) const override {
+    const opt::CampaignDefinition& def = lc.config.definition;
+    const long per_run =
+        def.stopping.max_evaluations + (def.polish_algorithm.empty() ? 0 : def.polish_max_evaluations);
+    return {1 + static_cast<long>(def.starts) * per_run, lc.config.block + ".starts x max_evaluations", 1};
+  }
 
-  opt::NloptDriver driver(def, evaluator);
-  const long per_run = def.stopping.max_evaluations + (def.polish_algorithm.empty() ? 0 : def.polish_max_evaluations);
-  Progress progress("optimize", 1L + static_cast<long>(def.starts) * per_run,
-                    rank == 0 && !o.quiet);
-  auto add = [&](const opt::EvaluationRecord& rec) {
-    journal.Add(rec);
-    progress.Update(static_cast<long>(journal.records().size()), journal.replayed());
-  };
-  auto resume_error = [&](const opt::ReplayMismatch& e) {
-    return io::InputError(journal.path() +
-                          ": cannot resume, the log does not match this campaign's sequence: " + e.what() +
-                          "; delete the file to start over");
-  };
-
-  // Baseline (evaluation 0): the base design. A local algorithm must start from a design that exists and
-  // satisfies the constraints; this is checked before anything is written or optimised.
-  std::string baseline_problem;
-  opt::EvaluationRecord baseline;
-  if (rank == 0) {
+  // A local algorithm must start from a design that exists and satisfies the constraints; this is checked
+  // before anything is written or optimised.
+  std::string Accept(CampaignRunner& r) override {
+    driver_ = std::make_unique<opt::NloptDriver>(r.definition(), r.evaluator());
+    if (r.rank() != 0) return "";
+    const opt::CampaignDefinition& def = r.definition();
     try {
-      baseline = driver.EvaluateBaseline(journal.Replay(), nullptr);  // logged once the start is accepted
+      baseline_ = driver_->EvaluateBaseline(r.journal().Replay(), nullptr);  // logged once the start is accepted
     } catch (const opt::ReplayMismatch& e) {
-      throw resume_error(e);
+      throw r.ResumeError(e);
     }
-    if (!opt::IsGlobal(def.algorithm) && !baseline.feasible) {
-      if (!baseline.result.produced) {
-        baseline_problem = "the base design (start point) is refused: " + baseline.result.error;
-      } else {
-        std::string violated;
-        const auto g = cs.Values(baseline.x, baseline.result);
-        for (std::size_t j = 0; j < g.size(); ++j) {
-          if (g[j] > def.feasibility_tol) {
-            const auto& c = def.constraints[j];
-            violated += (violated.empty() ? "" : ", ") + c.key + " = " + std::to_string(c.limit);
-          }
+    if (opt::IsGlobal(def.algorithm) || baseline_.feasible) return "";
+    std::string problem;
+    if (!baseline_.result.produced) {
+      problem = "the base design (start point) is refused: " + baseline_.result.error;
+    } else {
+      std::string violated;
+      const auto g = r.constraints().Values(baseline_.x, baseline_.result);
+      for (std::size_t j = 0; j < g.size(); ++j) {
+        if (g[j] > def.feasibility_tol) {
+          const auto& c = def.constraints[j];
+          violated += (violated.empty() ? "" : ", ") + c.key + " = " + std::to_string(c.limit);
         }
-        baseline_problem = "the base design (start point) violates " + violated;
       }
-      baseline_problem = o.config + ": " + lc.config.block + ": " + baseline_problem + "; local algorithm " +
-                         def.algorithm + " needs a feasible start (change the start or use a GN_* algorithm)";
+      problem = "the base design (start point) violates " + violated;
     }
+    return r.options().config + ": " + r.campaign().config.block + ": " + problem + "; local algorithm " +
+           def.algorithm + " needs a feasible start (change the start or use a GN_* algorithm)";
   }
-  baseline_problem = MpiBroadcast(baseline_problem);
-  if (!baseline_problem.empty()) throw io::InputError(baseline_problem);
 
-  // The campaign is accepted: from here on every evaluation is logged.
-  if (rank == 0) PrepareOutputDir(o.out, "optimize", o.config, lc.resolved);
-  journal.StartWriting();
-  if (rank == 0 && !o.quiet && journal.logged() > 0) {
-    std::fprintf(
-        stderr, "optimize: resuming: %ld evaluations in %s are replayed, not recomputed%s\n",
-        journal.logged(), journal.path().c_str(),
-        journal.truncated_tail() ? " (an incomplete last row from an interrupted run was discarded)" : "");
-  }
-  if (rank == 0) add(baseline);
-
-  // Multistart runs, round-robin over MPI ranks; rank 0 logs them in run order after each round.
-  nlohmann::json runs = nlohmann::json::array();
-  for (int round = 0; round * size < def.starts; ++round) {
-    const int run = round * size + rank;
-    std::string payload;
-    if (run < def.starts) {
-      std::string rows;
-      opt::RecordSink sink;
-      if (size == 1) {
-        sink = add;
-      } else {
-        sink = [&](const opt::EvaluationRecord& rec) { rows += journal.Serialise(rec); };
-      }
+  void Run(CampaignRunner& r) override {
+    const opt::CampaignDefinition& def = r.definition();
+    if (r.rank() == 0) r.Add(baseline_);
+    runs_ = r.Split(def.starts, [&](int run, const opt::RecordSink& sink) {
       opt::RunResult rr;
       try {
-        rr = driver.Run(run, journal.Replay(), sink);
+        rr = driver_->Run(run, r.journal().Replay(), sink);
       } catch (const opt::ReplayMismatch& e) {
-        throw resume_error(e);
+        throw r.ResumeError(e);
       }
       nlohmann::json j;
       j["run"] = rr.run;
-      j["start"] = Named(def.VariableNames(), rr.start);
+      j["start"] = NamedValues(def.VariableNames(), rr.start);
       j["evaluations"] = rr.evaluations;
       j["status"] = rr.status;
       if (!def.polish_algorithm.empty()) {
@@ -169,118 +103,74 @@ void RunOptimize(const OptimizeOptions& o) {
       j["found_feasible"] = rr.found_feasible;
       if (rr.found_feasible) {
         j["best_objective"] = rr.best_objective;
-        j["best_variables"] = Named(def.VariableNames(), rr.best_x);
+        j["best_variables"] = NamedValues(def.VariableNames(), rr.best_x);
       }
-      j["rows"] = rows;
-      payload = j.dump();
-    }
-    const auto gathered = MpiGather(payload);
-    if (rank != 0) continue;
-    for (const auto& p : gathered) {
-      if (p.empty()) continue;
-      nlohmann::json j = nlohmann::json::parse(p);
-      const std::string rows = j["rows"].get<std::string>();
-      std::size_t pos = 0;
-      while (pos < rows.size()) {
-        const std::size_t end = rows.find('\n', pos);
-        add(journal.Deserialise(rows.substr(pos, end - pos)));
-        pos = end + 1;
-      }
-      j.erase("rows");
-      runs.push_back(j);
-    }
+      return j;
+    });
   }
-  if (rank != 0) return;
 
-  const auto& recs = journal.records();
-  progress.Finish(static_cast<long>(recs.size()), journal.replayed());
-  long best = -1;
-  for (std::size_t i = 0; i < recs.size(); ++i) {
-    if (recs[i].feasible && (best < 0 || recs[i].result.objective < recs[best].result.objective)) {
-      best = static_cast<long>(i);
-    }
+  void Summarise(const CampaignRunner& r, long best, nlohmann::json* summary) override {
+    const opt::CampaignDefinition& def = r.definition();
+    nlohmann::json& s = *summary;
+    s["algorithm"] = def.algorithm;
+    if (!def.polish_algorithm.empty()) s["polish_algorithm"] = def.polish_algorithm;
+    s["starts"] = def.starts;
+    s["baseline_objective"] =
+        baseline_.result.produced ? nlohmann::json(baseline_.result.objective) : nlohmann::json();
+    s["baseline_feasible"] = baseline_.feasible;
+    s["baseline"] = RecordJson(baseline_, 0, r);
+    if (best >= 0) s["best"] = RecordJson(r.journal().records()[best], best, r);
+    s["runs"] = runs_;
   }
-  nlohmann::json s;
-  s["tool"] = std::string("hullopt ") + kVersion;
-  s["command"] = "optimize";
-  s["algorithm"] = def.algorithm;
-  if (!def.polish_algorithm.empty()) s["polish_algorithm"] = def.polish_algorithm;
-  s["evaluations"] = recs.size();
-  s["computed_evaluations"] = static_cast<long>(recs.size()) - journal.replayed();
-  s["replayed_evaluations"] = journal.replayed();
-  s["starts"] = def.starts;
-  s["seed"] = def.seed;
-  s["threads"] = threads;
-  s["mpi_ranks"] = size;
-  s["baseline_objective"] =
-      baseline.result.produced ? nlohmann::json(baseline.result.objective) : nlohmann::json();
-  s["baseline_feasible"] = baseline.feasible;
-  s["baseline"] = RecordJson(baseline, 0, def, evaluator, cs);
-  if (best >= 0) {
-    s["best_objective"] = recs[best].result.objective;
-    s["best_evaluation"] = best;
-    s["best"] = RecordJson(recs[best], best, def, evaluator, cs);
-  } else {
-    s["best_objective"] = nullptr;
-    s["best_evaluation"] = nullptr;
+
+  void WritePlots(const CampaignRunner& r) const override {
+    const opt::CampaignDefinition& def = r.definition();
+    io::WriteOptimizePlots(r.options().out, r.journal().records(), def.VariableNames(), def.LowerBounds(),
+                           def.UpperBounds(), r.evaluator().ObjectiveLabel());
   }
-  s["runs"] = runs;
-  ReportWarnings(recs, best, journal.path(), o.quiet, &s);
-  const std::string resolution_warning =
-      best >= 0 ? CheckBestResolution(lc, recs[best].x, best, o.quiet, &s) : std::string();
-  s["wall_time_s"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
-  io::WriteJson(OutPath(o.out, "summary.json"), s);
-  io::WriteOptimizePlots(o.out, recs, def.VariableNames(), def.LowerBounds(), def.UpperBounds(),
-                         evaluator.ObjectiveLabel());
-  if (best >= 0) {
-    char comment[200];
-    std::snprintf(
-        comment, sizeof comment,
-        "hullopt optimize: best design of %s (evaluation %ld, objective %.10g); base config with the "
-        "best variable values",
-        o.config.c_str(), best, recs[best].result.objective);
-    io::WriteBestYaml(OutPath(o.out, "best.yaml"), lc.raw, lc.config.block, def.VariableNames(),
-                      lc.config.start_source, recs[best].x,
-                      resolution_warning.empty() ? std::string(comment)
-                                                 : std::string(comment) + "\n# WARNING: " + resolution_warning);
-    WriteCampaignReport(o.out, "optimize", o.config);
-  }
-  if (!o.quiet) {
+
+  void PrintResult(const CampaignRunner& r, long best, const nlohmann::json&) const override {
+    const auto& recs = r.journal().records();
     if (best >= 0) {
-      std::printf("best objective %.10g at evaluation %ld of %zu (baseline %.10g)\n",
-                  recs[best].result.objective, best, recs.size(),
-                  baseline.result.produced ? baseline.result.objective : NAN);
+      std::printf("best objective %.10g at evaluation %ld of %zu (baseline %.10g)\n", recs[best].result.objective,
+                  best, recs.size(), baseline_.result.produced ? baseline_.result.objective : NAN);
     } else {
       std::printf("no feasible design found in %zu evaluations\n", recs.size());
     }
     std::printf("wrote %s, best.yaml, summary.json, convergence.svg, variables.svg in %s\n",
-                journal.path().c_str(), o.out.c_str());
+                r.journal().path().c_str(), r.options().out.c_str());
   }
+
+ private:
+  std::unique_ptr<opt::NloptDriver> driver_;
+  opt::EvaluationRecord baseline_;
+  std::vector<nlohmann::json> runs_;
+};
+
+void RunOptimize(const CampaignCliOptions& o) {
+  OptimizeCampaign kind;
+  RunCampaign(kind, o);
 }
 
 }  // namespace
 
 void AddOptimizeCommand(CLI::App& app) {
-  auto o = std::make_shared<OptimizeOptions>();
-  auto* cmd = app.add_subcommand(
-      "optimize",
-      "Minimise the campaign objective over the free design variables (NLopt; resumable: re-run the same "
-      "command to continue an interrupted campaign; mpirun -n N spreads multistart runs over ranks)");
-  cmd->add_option("config", o->config, "campaign YAML (optimize: block)")->required();
-  cmd->add_option("--out", o->out, "output folder (history.csv, best.yaml, summary.json)")->required();
-  cmd->add_option("--threads", o->threads, "OpenMP threads per process (0 = OpenMP default)");
-  cmd->add_flag("--quiet", o->quiet, "no progress output");
-  cmd->callback([o] {
-    // One lock on the campaign folder for the whole run (a Pareto sweep's runs live inside it).
-    const OutputFolderGuard lock(o->out, "optimize", o->config);
-    if (!HasParetoSweep(o->config)) return RunOptimize(*o);
-    RunParetoSweep(o->config, o->out, [o](const std::string& config, const std::string& out) {
-      OptimizeOptions one = *o;
-      one.config = config;
-      one.out = out;
-      RunOptimize(one);
-    });
-  });
+  AddCampaignCommand(
+      app,
+      {"optimize",
+       "Minimise the campaign objective over the free design variables (NLopt; resumable: re-run the same "
+       "command to continue an interrupted campaign; mpirun -n N spreads multistart runs over ranks)",
+       "campaign YAML (optimize: block)", "config", "output folder (history.csv, best.yaml, summary.json)"},
+      // One lock on the campaign folder for the whole run (a Pareto sweep's runs live inside it).
+      [](const CampaignCliOptions& o) {
+        if (!HasParetoSweep(o.config)) return RunOptimize(o);
+        RunParetoSweep(o.config, o.out, [o](const std::string& config, const std::string& out) {
+          CampaignCliOptions one = o;
+          one.config = config;
+          one.out = out;
+          RunOptimize(one);
+        });
+      });
 }
 
 }  // namespace hullopt::app

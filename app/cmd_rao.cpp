@@ -132,15 +132,10 @@ void RunRao(const std::string& config_file, const std::string& out_dir) {
 }  // namespace
 
 void AddRaoCommand(CLI::App& app) {
-  auto* cmd = app.add_subcommand("rao", "heave and pitch RAOs in head seas (rao.csv, rao.svg)");
-  auto config = std::make_shared<std::string>();
-  auto out = std::make_shared<std::string>();
-  cmd->add_option("config", *config, "YAML config (hull, mass, speed, water, solver, compare)")->required();
-  cmd->add_option("--out", *out, "output folder")->required();
-  cmd->callback([config, out] {
-    const OutputFolderGuard lock(*out, "rao", *config);
-    RunRao(*config, *out);
-  });
+  AddConfigCommand(app,
+                   {"rao", "heave and pitch RAOs in head seas (rao.csv, rao.svg)",
+                    "YAML config (hull, mass, speed, water, solver, compare)"},
+                   RunRao);
 }
 
 }  // namespace hullopt::app

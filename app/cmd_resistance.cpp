@@ -92,17 +92,11 @@ void RunResistance(const std::string& config, const std::string& out_dir) {
 }  // namespace
 
 void AddResistanceCommand(CLI::App& app) {
-  auto* cmd = app.add_subcommand("resistance",
-                                 "calm-water resistance and effective power against speed (resistance.csv, "
-                                 "resistance.svg)");
-  auto config = std::make_shared<std::string>();
-  auto out = std::make_shared<std::string>();
-  cmd->add_option("config", *config, "YAML config (hull, water, resistance, speed)")->required();
-  cmd->add_option("--out", *out, "output folder")->required();
-  cmd->callback([config, out] {
-    const OutputFolderGuard lock(*out, "resistance", *config);
-    RunResistance(*config, *out);
-  });
+  AddConfigCommand(app,
+                   {"resistance",
+                    "calm-water resistance and effective power against speed (resistance.csv, resistance.svg)",
+                    "YAML config (hull, water, resistance, speed)"},
+                   RunResistance);
 }
 
 }  // namespace hullopt::app

@@ -152,18 +152,10 @@ void RunSection(const std::string& config_file, const std::string& out_dir) {
 }  // namespace
 
 void AddSectionCommand(CLI::App& app) {
-  auto* cmd = app.add_subcommand(
-      "section", "Heave added mass and damping per unit length of 2D sections (section.csv, section.svg)");
-  auto config = std::make_shared<std::string>();
-  auto out = std::make_shared<std::string>();
-  cmd->add_option("CONFIG", *config,
-                  "YAML config with a section: block (see examples/section_semicircle.yaml)")
-      ->required();
-  cmd->add_option("--out", *out, "output folder")->required();
-  cmd->callback([config, out] {
-    const OutputFolderGuard lock(*out, "section", *config);
-    RunSection(*config, *out);
-  });
+  AddConfigCommand(app,
+                   {"section", "Heave added mass and damping per unit length of 2D sections (section.csv, section.svg)",
+                    "YAML config with a section: block (see examples/section_semicircle.yaml)", "CONFIG"},
+                   RunSection);
 }
 
 }  // namespace hullopt::app

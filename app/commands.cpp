@@ -1,8 +1,31 @@
 #include "app/commands.h"
 
+#include <memory>
+
+#include "app/output_dir.h"
 #include "app/run_checks.h"
 
 namespace hullopt::app {
+
+CLI::App* AddConfigCommand(CLI::App& app, const CommandText& text,
+                           std::function<void(const std::string& config, const std::string& out)> run) {
+  auto* cmd = app.add_subcommand(text.name, text.description);
+  auto config = std::make_shared<std::string>();
+  auto out = std::make_shared<std::string>(text.default_out ? text.default_out : "");
+  cmd->add_option(text.config_name, *config, text.config_help)->required();
+  auto* out_option = cmd->add_option("--out", *out, text.out_help);
+  if (text.default_out) {
+    out_option->capture_default_str();
+  } else {
+    out_option->required();
+  }
+  const std::string name = text.name;
+  cmd->callback([config, out, name, run = std::move(run)] {
+    const OutputFolderGuard lock(*out, name, *config);
+    run(*config, *out);
+  });
+  return cmd;
+}
 
 void AddAllCommands(CLI::App& app) {
   AddHullCommand(app);

@@ -3,7 +3,25 @@
 // throws io::InputError for bad input (printed by main as one line, exit code 1).
 #include <CLI/CLI.hpp>
 
+#include <functional>
+#include <string>
+
 namespace hullopt::app {
+
+/// What `hullopt NAME CONFIG --out DIR` shows in --help.
+struct CommandText {
+  const char* name;
+  const char* description;
+  const char* config_help;
+  const char* config_name = "config";       ///< the positional argument's name
+  const char* out_help = "output folder";
+  const char* default_out = nullptr;        ///< --out when it is not given (nullptr: --out is required)
+};
+/// Registers `hullopt NAME CONFIG --out DIR`; its callback holds the output folder's lock (OutputFolderGuard)
+/// while run(config, out) runs. Returns the subcommand, for the command's further options.
+CLI::App* AddConfigCommand(CLI::App& app, const CommandText& text,
+                           std::function<void(const std::string& config, const std::string& out)> run);
+
 void AddHullCommand(CLI::App& app);
 void AddSectionCommand(CLI::App& app);
 void AddRaoCommand(CLI::App& app);

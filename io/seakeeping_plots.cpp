@@ -4,6 +4,7 @@
 #include <cctype>
 #include <cmath>
 #include <cstdio>
+#include <functional>
 
 #include "io/design_variable_label.h"
 #include "io/rao_axis_labels.h"
@@ -163,60 +164,72 @@ PlotFigure AccelerationPerMetreFigure(const std::vector<EvaluatedDesign>& design
   return fig;
 }
 
-PlotFigure AccelerationPerMetreVsHsFigure(const std::vector<EvaluatedDesign>& designs) {
+namespace {
+
+// A figure of one panel per design (titled with its number and name), y axis from zero; draw(p, d) adds the
+// design's series to its panel.
+PlotFigure PanelPerDesignFigure(const std::vector<EvaluatedDesign>& designs, const std::string& title,
+                                double panel_width_px, double panel_height_px, const std::string& x_label,
+                                const std::string& y_label,
+                                const std::function<void(PlotPanel& p, const EvaluatedDesign& d)>& draw) {
   PlotFigure fig;
-  fig.title = "Rms vertical acceleration per metre of wave height vs Hs";
-  fig.panel_width_px = 380.0;
-  fig.panel_height_px = 290.0;
+  fig.title = title;
+  fig.panel_width_px = panel_width_px;
+  fig.panel_height_px = panel_height_px;
   for (size_t i = 0; i < designs.size(); ++i) {
-    const auto& d = designs[i];
-    auto& p = fig.AddPanel(Numbered(i, d), "Hs [m]", "σ_a / Hs [g/m]");
+    auto& p = fig.AddPanel(Numbered(i, designs[i]), x_label, y_label);
     p.y_include_zero = true;
-    if (d.evaluation.seas.empty()) continue;
-    const auto& positions = d.evaluation.seas[0].positions;
-    for (size_t k = 0; k < positions.size(); ++k) {
-      std::vector<double> x, y;
-      for (const auto& s : d.evaluation.seas) {
-        x.push_back(s.sea.Hs_m);
-        y.push_back(k < s.positions.size() ? s.positions[k].rms_accel_g / s.sea.Hs_m : NAN);
-      }
-      p.series.push_back(PlotSeries::LineMarkers(PositionLabel(positions[k]), x, y));
-    }
+    draw(p, designs[i]);
   }
+  return fig;
+}
+
+}  // namespace
+
+PlotFigure AccelerationPerMetreVsHsFigure(const std::vector<EvaluatedDesign>& designs) {
+  PlotFigure fig = PanelPerDesignFigure(
+      designs, "Rms vertical acceleration per metre of wave height vs Hs", 380.0, 290.0, "Hs [m]",
+      "σ_a / Hs [g/m]", [](PlotPanel& p, const EvaluatedDesign& d) {
+        if (d.evaluation.seas.empty()) return;
+        const auto& positions = d.evaluation.seas[0].positions;
+        for (size_t k = 0; k < positions.size(); ++k) {
+          std::vector<double> x, y;
+          for (const auto& s : d.evaluation.seas) {
+            x.push_back(s.sea.Hs_m);
+            y.push_back(k < s.positions.size() ? s.positions[k].rms_accel_g / s.sea.Hs_m : NAN);
+          }
+          p.series.push_back(PlotSeries::LineMarkers(PositionLabel(positions[k]), x, y));
+        }
+      });
   fig.footnote = "x: position forward of the CG";
   return fig;
 }
 
 PlotFigure MsiAlongHullFigure(const std::vector<EvaluatedDesign>& designs) {
-  PlotFigure fig;
-  fig.title = "Motion sickness incidence at each position along the hull";
-  fig.panel_width_px = 420.0;
-  fig.panel_height_px = 300.0;
-  for (size_t i = 0; i < designs.size(); ++i) {
-    const auto& d = designs[i];
-    auto& p = fig.AddPanel(Numbered(i, d), "position x forward of the CG [m]", "MSI [%]");
-    p.y_include_zero = true;
-    p.pad_fraction = 0.08;
-    const size_t ref = d.evaluation.seas.empty() ? 0 : ReferenceSeaIndex(d.evaluation.seas);
-    for (size_t k = 0; k < d.evaluation.seas.size(); ++k) {
-      const auto& s = d.evaluation.seas[k];
-      std::vector<const sk::PositionResult*> along;
-      for (const auto& r : s.positions) along.push_back(&r);
-      std::stable_sort(along.begin(), along.end(),
-                       [](const auto* a, const auto* b) { return a->x_from_cg_m < b->x_from_cg_m; });
-      std::vector<double> x, y;
-      std::vector<std::string> names;
-      for (const auto* r : along) {
-        x.push_back(r->x_from_cg_m);
-        y.push_back(r->msi_pct);
-        names.push_back(k == ref ? (r->position == "lcg" ? "LCG" : r->position) : "");
-      }
-      auto series = PlotSeries::LineMarkers(SeaLabel(s), x, y);
-      series.line_width_px = 1.0;
-      series.point_labels = names;
-      p.series.push_back(series);
-    }
-  }
+  PlotFigure fig = PanelPerDesignFigure(
+      designs, "Motion sickness incidence at each position along the hull", 420.0, 300.0,
+      "position x forward of the CG [m]", "MSI [%]", [](PlotPanel& p, const EvaluatedDesign& d) {
+        p.pad_fraction = 0.08;
+        const size_t ref = d.evaluation.seas.empty() ? 0 : ReferenceSeaIndex(d.evaluation.seas);
+        for (size_t k = 0; k < d.evaluation.seas.size(); ++k) {
+          const auto& s = d.evaluation.seas[k];
+          std::vector<const sk::PositionResult*> along;
+          for (const auto& r : s.positions) along.push_back(&r);
+          std::stable_sort(along.begin(), along.end(),
+                           [](const auto* a, const auto* b) { return a->x_from_cg_m < b->x_from_cg_m; });
+          std::vector<double> x, y;
+          std::vector<std::string> names;
+          for (const auto* r : along) {
+            x.push_back(r->x_from_cg_m);
+            y.push_back(r->msi_pct);
+            names.push_back(k == ref ? (r->position == "lcg" ? "LCG" : r->position) : "");
+          }
+          auto series = PlotSeries::LineMarkers(SeaLabel(s), x, y);
+          series.line_width_px = 1.0;
+          series.point_labels = names;
+          p.series.push_back(series);
+        }
+      });
   fig.footnote = "Positions named in the sea of largest Hs; MSI as in msi.csv (model and exposure in summary.json)";
   return fig;
 }

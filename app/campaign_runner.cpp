@@ -1,0 +1,186 @@
+#include "app/campaign_runner.h"
+
+#ifdef _OPENMP
+#include <omp.h>
+#endif
+
+#include <cstdio>
+
+#include "app/campaign_report.h"
+#include "app/mpi_context.h"
+#include "app/output_dir.h"
+#include "app/run_checks.h"
+#include "hullopt/version.h"
+#include "io/campaign_outputs.h"
+
+namespace hullopt::app {
+
+long CampaignKind::Resumed(const CampaignRunner& runner) const { return runner.journal().logged(); }
+
+std::string CampaignKind::Accept(CampaignRunner&) { return ""; }
+
+nlohmann::json NamedValues(const std::vector<std::string>& names, const std::vector<double>& values) {
+  nlohmann::json j = nlohmann::json::object();
+  for (std::size_t i = 0; i < names.size() && i < values.size(); ++i) j[names[i]] = values[i];
+  return j;
+}
+
+CampaignRunner::CampaignRunner(CampaignKind& kind, const CampaignCliOptions& options)
+    : kind_(kind),
+      words_(kind.Wording()),
+      options_(options),
+      wall0_(std::chrono::steady_clock::now()),
+      campaign_(LoadCampaign(options.config, kind.ConfigCommand())) {}
+
+void CampaignRunner::Add(const opt::EvaluationRecord& rec) {
+  journal_->Add(rec);
+  progress_->Update(static_cast<long>(journal_->records().size()), journal_->replayed());
+}
+
+io::InputError CampaignRunner::ResumeError(const opt::ReplayMismatch& e) const {
+  return io::InputError(journal_->path() + ": cannot resume, the log does not match this campaign's " +
+                        words_.sequence + ": " + e.what() + "; delete the file to start over");
+}
+
+std::vector<nlohmann::json> CampaignRunner::Split(int units, const UnitWork& work) {
+  std::vector<nlohmann::json> reports;
+  for (int round = 0; round * size_ < units; ++round) {
+    const int unit = round * size_ + rank_;
+    std::string payload;  // empty: this rank has no unit in this round
+    if (unit < units) {
+      std::string rows;
+      opt::RecordSink sink;
+      if (size_ == 1) {
+        sink = [this](const opt::EvaluationRecord& rec) { Add(rec); };
+      } else {
+        sink = [&](const opt::EvaluationRecord& rec) { rows += journal_->Serialise(rec); };
+      }
+      nlohmann::json j = work(unit, sink);
+      j["rows"] = rows;
+      payload = j.dump();
+    }
+    const auto gathered = MpiGather(payload);
+    if (rank_ != 0) continue;
+    for (const auto& p : gathered) {
+      if (p.empty()) continue;
+      nlohmann::json j = nlohmann::json::parse(p);
+      const std::string rows = j["rows"].get<std::string>();
+      std::size_t pos = 0;
+      while (pos < rows.size()) {
+        const std::size_t end = rows.find('\n', pos);
+        Add(journal_->Deserialise(rows.substr(pos, end - pos)));
+        pos = end + 1;
+      }
+      j.erase("rows");
+      reports.push_back(j);
+    }
+  }
+  return reports;
+}
+
+void CampaignRunner::Start() {
+  const std::string& command = words_.command;
+  CheckOutputDirCommand(options_.out, command);
+  kind_.CheckOptions();
+  threads_ = ResolveThreads(options_.threads);
+#ifdef _OPENMP
+  // For the physics inside one evaluation too (nested regions inside a parallel loop over designs run on one
+  // thread), so --threads 1 is one core.
+  omp_set_num_threads(threads_);
+#endif
+  rank_ = MpiRank();
+  size_ = MpiSize();
+  const CampaignSize size = kind_.Size(campaign_, threads_);
+  CheckCampaignCost(command, campaign_.resolved, campaign_.config.block, size.evaluations, size.count_key,
+                    size.parallel);
+
+  const opt::CampaignDefinition& def = definition();
+  opt::Evaluator& ev = evaluator();
+  constraints_ = std::make_unique<opt::ConstraintSet>(def, ev.QuantityNames());
+  io::HistoryLayout layout{def.VariableNames(), ev.SeaNames(), constraints_->ReportedQuantities()};
+  journal_ = std::make_unique<CampaignJournal>(options_.out, words_.log_file, layout, campaign_.config_hash,
+                                               campaign_.resolved, *constraints_, ev.QuantityNames().size());
+  journal_->Verify(ev, def);
+  progress_ = std::make_unique<Progress>(command, size.evaluations, rank_ == 0 && !options_.quiet);
+
+  // Nothing is written before the campaign is accepted; from then on every evaluation is logged.
+  const std::string problem = MpiBroadcast(kind_.Accept(*this));
+  if (!problem.empty()) throw io::InputError(problem);
+  if (rank_ == 0) PrepareOutputDir(options_.out, command, options_.config, campaign_.resolved);
+  journal_->StartWriting();
+  const long resumed = kind_.Resumed(*this);
+  if (rank_ == 0 && !options_.quiet && resumed > 0) {
+    std::fprintf(
+        stderr, "%s: resuming: %ld %s in %s are replayed, not recomputed%s\n", command.c_str(), resumed,
+        words_.resumed.c_str(), journal_->path().c_str(),
+        journal_->truncated_tail() ? " (an incomplete last row from an interrupted run was discarded)" : "");
+  }
+}
+
+void CampaignRunner::Finish() {
+  const std::string& command = words_.command;
+  const opt::CampaignDefinition& def = definition();
+  const auto& recs = journal_->records();
+  progress_->Finish(static_cast<long>(recs.size()), journal_->replayed());
+  long best = -1;
+  for (std::size_t i = 0; i < recs.size(); ++i) {
+    if (recs[i].feasible && (best < 0 || recs[i].result.objective < recs[best].result.objective)) {
+      best = static_cast<long>(i);
+    }
+  }
+  nlohmann::json s;
+  s["tool"] = std::string("hullopt ") + kVersion;
+  s["command"] = command;
+  s["evaluations"] = recs.size();
+  s["computed_evaluations"] = static_cast<long>(recs.size()) - journal_->replayed();
+  s["replayed_evaluations"] = journal_->replayed();
+  s["threads"] = threads_;
+  s["mpi_ranks"] = size_;
+  s["seed"] = def.seed;
+  s["best_objective"] = best >= 0 ? nlohmann::json(recs[best].result.objective) : nlohmann::json();
+  s["best_evaluation"] = best >= 0 ? nlohmann::json(best) : nlohmann::json();
+  ReportWarnings(recs, best, journal_->path(), options_.quiet, &s);
+  const std::string resolution_warning =
+      best >= 0 ? CheckBestResolution(campaign_, recs[best].x, best, options_.quiet, &s) : std::string();
+  kind_.Summarise(*this, best, &s);
+  s["wall_time_s"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0_).count();
+  io::WriteJson(OutPath(options_.out, "summary.json"), s);
+  kind_.WritePlots(*this);
+  if (best >= 0) {
+    char comment[200];
+    std::snprintf(comment, sizeof comment, "hullopt %s: %s of %s (evaluation %ld, objective %.10g); %s",
+                  command.c_str(), words_.best.c_str(), options_.config.c_str(), best,
+                  recs[best].result.objective, words_.best_base.c_str());
+    io::WriteBestYaml(OutPath(options_.out, "best.yaml"), campaign_.raw, campaign_.config.block,
+                      def.VariableNames(), campaign_.config.start_source, recs[best].x,
+                      resolution_warning.empty() ? std::string(comment)
+                                                 : std::string(comment) + "\n# WARNING: " + resolution_warning);
+    WriteCampaignReport(options_.out, command, options_.config);
+  }
+  if (!options_.quiet) kind_.PrintResult(*this, best, s);
+}
+
+CLI::App* AddCampaignCommand(CLI::App& app, const CommandText& text,
+                             std::function<void(const CampaignCliOptions&)> run,
+                             const std::function<void(CLI::App*)>& more_options) {
+  auto o = std::make_shared<CampaignCliOptions>();
+  auto* cmd = AddConfigCommand(app, text, [o, run = std::move(run)](const std::string& config, const std::string& out) {
+    CampaignCliOptions one = *o;
+    one.config = config;
+    one.out = out;
+    run(one);
+  });
+  cmd->add_option("--threads", o->threads, "OpenMP threads per process (0 = OpenMP default)");
+  if (more_options) more_options(cmd);
+  cmd->add_flag("--quiet", o->quiet, "no progress output");
+  return cmd;
+}
+
+void RunCampaign(CampaignKind& kind, const CampaignCliOptions& options) {
+  CampaignRunner runner(kind, options);
+  runner.Start();
+  kind.Run(runner);
+  if (runner.rank() == 0) runner.Finish();
+}
+
+}  // namespace hullopt::app
