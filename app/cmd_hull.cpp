@@ -8,6 +8,7 @@
 #include "app/commands.h"
 #include "app/output_dir.h"
 #include "io/bodyplan_svg.h"
+#include "io/html_report.h"
 #include "io/hull_config.h"
 #include "io/hydrostatics_json.h"
 #include "io/input_error.h"
@@ -71,8 +72,8 @@ void RunHull(const std::string& config, const std::string& out_dir) {
   io::WriteHydrostaticsJson(OutPath(out_dir, "hydrostatics.json"), hull, rep);
   io::WriteOffsetsCsv(OutPath(out_dir, "offsets.csv"), hull);
   std::ostringstream title;
-  title << hull.type << " — L " << hs.L_m << " m, B " << hs.B_m << " m, T " << hs.T_m << " m, "
-        << hs.displacement_t << " t";
+  title << hull.type << " — L " << io::FormatNumber(hs.L_m) << " m, B " << io::FormatNumber(hs.B_m) << " m, T "
+        << io::FormatNumber(hs.T_m) << " m, " << io::FormatNumber(hs.displacement_t) << " t";
   io::WriteBodyPlanSvg(OutPath(out_dir, "bodyplan.svg"), hull, title.str());
 
   std::cout << "hull " << hull.type << ": L = " << hs.L_m << " m, B = " << hs.B_m << " m, T = " << hs.T_m
