@@ -6,8 +6,8 @@
 // The SWATHs are the hard case: their generated bulb flattens towards the bow into a plate less than a
 // millimetre thick and 4–5 m wide, which panels on both faces make near-singular (1080 at x = 63 m for SW2
 // with the former arc-length spacing); the panelling cuts such a fold at its root (seakeeping/green/panel.h).
-// Measured worst (median) at 40 × 14: catamarans 3.3–11.6 (1.3–4.8), SW1 40, SW2 62 (3.3, 5.1), trihull 5.2,
-// monohulls 6.9–7.6.
+// Measured worst (median) at 40 × 14: catamarans 3.3–11.6 (1.3–4.8), SWATHs 17.5–45.7 (1.7–4.1), trihull
+// 5.2, monohulls 6.9–7.6 (table in docs/study-14-hulls.md).
 #include <catch2/catch.hpp>
 #include <algorithm>
 #include <cstdio>
