@@ -52,8 +52,10 @@ struct TransientGreenPair {
   bool conj = false;           ///< Y < 0: every result is the conjugate of the |Y| one
 };
 
-/// The pair of (Y, Z) [m] with gravity g [m/s²]. Same errors as TransientGreen (without the lag).
-TransientGreenPair MakeTransientGreenPair(double Y, double Z, double g);
+/// The pair of (Y, Z) [m] with gravity g [m/s²]. Same errors as TransientGreen (without the lag). Without
+/// `with_log`, log_w is left zero: enough for H⁽⁻¹⁾ (TransientGreenTimeIntegral), which does not use it, and
+/// saves the logarithm and arctangent; K needs it.
+TransientGreenPair MakeTransientGreenPair(double Y, double Z, double g, bool with_log = true);
 
 /// H⁽⁻¹⁾ at lag t >= 0 [s] for a prepared pair (no argument checks: the strip kernel's hot path).
 std::complex<double> TransientGreenTimeIntegral(const TransientGreenPair& pair, double t);

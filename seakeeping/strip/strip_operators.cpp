@@ -88,7 +88,7 @@ std::vector<Level> ComputeLevels(const FieldSet& f, const std::vector<Panel>& sr
   const bool both_positive = nl == 2 && lags[0] > 0.0 && lags[1] > 0.0;  // the interleaved two-lag form
   for (int i = 0; velocity && i < nf; ++i) {
     for (int q = 0; q < ne; ++q) {
-      const TransientGreenPair pair = MakeTransientGreenPair(f.cy[i] - e.y[q], f.cz[i] + e.z[q], g);
+      const TransientGreenPair pair = MakeTransientGreenPair(f.cy[i] - e.y[q], f.cz[i] + e.z[q], g, false);
       if (both_positive)
         TransientGreenTimeIntegrals2(pair, lags.data(), &h[q * nl]);
       else
