@@ -477,4 +477,36 @@ void TransientGreenSpaceTimeIntegrals2(const TransientGreenPair& pair, const dou
   for (int n = 0; n < 2; ++n) out[n] = TransientGreenSpaceTimeIntegral(pair, t[n], log_t[n], g);
 }
 
+void TransientGreenTimeIntegrals2x2(const TransientGreenPair pair[2], const double t[2], cd out[4]) {
+  const cd x[4] = {t[0] * pair[0].w, t[1] * pair[0].w, t[0] * pair[1].w, t[1] * pair[1].w};
+  constexpr double r2 = kAsymptoticRadius * kAsymptoticRadius;
+  for (int n = 0; n < 4; ++n)
+    if (!(std::norm(x[n]) < r2)) {
+      TransientGreenTimeIntegrals2(pair[0], t, out);
+      TransientGreenTimeIntegrals2(pair[1], t, out + 2);
+      return;
+    }
+  DawsonIntegralTableOnlyN<4>(x, out);
+  for (int n = 0; n < 4; ++n) out[n] = ConjIf(pair[n / 2].conj, 8.0 * out[n]);
+}
+
+void TransientGreenSpaceTimeIntegrals2x2(const TransientGreenPair pair[2], const double t[2], const double log_t[2],
+                                         double g, cd out[4]) {
+  const cd x[4] = {t[0] * pair[0].w, t[1] * pair[0].w, t[0] * pair[1].w, t[1] * pair[1].w};
+  constexpr double r2 = kAsymptoticRadius * kAsymptoticRadius;
+  for (int n = 0; n < 4; ++n)
+    if (!(std::norm(x[n]) < r2)) {
+      TransientGreenSpaceTimeIntegrals2(pair[0], t, log_t, g, out);
+      TransientGreenSpaceTimeIntegrals2(pair[1], t, log_t, g, out + 2);
+      return;
+    }
+  PhiAndF pf[4];
+  DawsonIntegralTableN<4>(x, pf);
+  for (int n = 0; n < 4; ++n) {
+    const TransientGreenPair& pr = pair[n / 2];
+    const double tn = t[n % 2];
+    out[n] = ConjIf(pr.conj, KFromTable(x[n], pr.a, g * tn * tn, cd(log_t[n % 2], 0.0) + pr.log_w, pf[n]));
+  }
+}
+
 }  // namespace hullopt::sk

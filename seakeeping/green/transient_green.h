@@ -71,6 +71,11 @@ void TransientGreenTimeIntegrals2(const TransientGreenPair& pair, const double t
 void TransientGreenSpaceTimeIntegrals2(const TransientGreenPair& pair, const double t[2], const double log_t[2],
                                        double g, std::complex<double> out[2]);
 
+/// The same for two pairs at once (four interleaved table evaluations): out[2p + n] is pair[p] at t[n].
+void TransientGreenTimeIntegrals2x2(const TransientGreenPair pair[2], const double t[2], std::complex<double> out[4]);
+void TransientGreenSpaceTimeIntegrals2x2(const TransientGreenPair pair[2], const double t[2], const double log_t[2],
+                                         double g, std::complex<double> out[4]);
+
 /// Complex Dawson function F(x) = e^{−x²} ∫_0^x e^{u²} du (libcerf).
 std::complex<double> Dawson(std::complex<double> x);
 
