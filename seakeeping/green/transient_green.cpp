@@ -139,15 +139,17 @@ const PhiTable& Table() {
   return table;
 }
 
-const cd* NodeCoefficients(cd x, cd* delta) {
+const cd* NodeCoefficients(const cd* table, cd x, cd* delta) {
   // x is in the first quadrant: rounding by +0.5 truncation (cheaper than lround on this hot path).
   // Multiplication by 1/step rather than division: a point halfway between nodes may round to either, and
   // both are within the Taylor radius.
   const int i = static_cast<int>(x.real() * kInvGridStep + 0.5);
   const int j = static_cast<int>(x.imag() * kInvGridStep + 0.5);
   *delta = x - cd(i * kGridStep, j * kGridStep);
-  return &Table().coef[static_cast<std::size_t>((i * (kGridN + 1) + j) * kCoefficients)];
+  return table + static_cast<std::size_t>((i * (kGridN + 1) + j) * kCoefficients);
 }
+// The same with the table looked up here (one guarded static per call; the block forms below look it up once).
+const cd* NodeCoefficients(cd x, cd* delta) { return NodeCoefficients(Table().coef.data(), x, delta); }
 
 // Horner's rule in real arithmetic: std::complex multiplication carries a NaN/infinity recovery branch
 // (C99 Annex G) on every step; the values here are finite, and the products are the same.
@@ -210,12 +212,13 @@ inline cd Store(__m128d v) {
 
 template <int L>
 void DawsonIntegralTableOnlyN(const cd* x, cd* phi) {
+  const cd* table = Table().coef.data();
   const cd* c[L];
 #if defined(__SSE2__)
   __m128d d_re[L], d_im[L], p[L];
   for (int n = 0; n < L; ++n) {
     cd d;
-    c[n] = NodeCoefficients(x[n], &d);
+    c[n] = NodeCoefficients(table, x[n], &d);
     d_re[n] = _mm_set1_pd(d.real()), d_im[n] = _mm_set_pd(d.imag(), -d.imag());
     p[n] = Load(&c[n][kCoefficients - 1]);
   }
@@ -226,7 +229,7 @@ void DawsonIntegralTableOnlyN(const cd* x, cd* phi) {
   double dr[L], di[L], pr[L], pi[L];
   for (int n = 0; n < L; ++n) {
     cd d;
-    c[n] = NodeCoefficients(x[n], &d);
+    c[n] = NodeCoefficients(table, x[n], &d);
     dr[n] = d.real(), di[n] = d.imag();
     pr[n] = c[n][kCoefficients - 1].real(), pi[n] = c[n][kCoefficients - 1].imag();
   }
@@ -243,12 +246,13 @@ void DawsonIntegralTableOnlyN(const cd* x, cd* phi) {
 template <int L>
 void DawsonIntegralTableN(const cd* x, PhiAndF* out) {
   constexpr int M = kCoefficients - 1;
+  const cd* table = Table().coef.data();
   const cd* c[L];
 #if defined(__SSE2__)
   __m128d d_re[L], d_im[L], p[L], f[L];
   for (int n = 0; n < L; ++n) {
     cd d;
-    c[n] = NodeCoefficients(x[n], &d);
+    c[n] = NodeCoefficients(table, x[n], &d);
     d_re[n] = _mm_set1_pd(d.real()), d_im[n] = _mm_set_pd(d.imag(), -d.imag());
     p[n] = Load(&c[n][M]);
     f[n] = _mm_mul_pd(_mm_set1_pd(M), p[n]);
@@ -267,7 +271,7 @@ void DawsonIntegralTableN(const cd* x, PhiAndF* out) {
   double dr[L], di[L], pr[L], pi[L], fr[L], fi[L];
   for (int n = 0; n < L; ++n) {
     cd d;
-    c[n] = NodeCoefficients(x[n], &d);
+    c[n] = NodeCoefficients(table, x[n], &d);
     dr[n] = d.real(), di[n] = d.imag();
     pr[n] = c[n][M].real(), pi[n] = c[n][M].imag();
     fr[n] = M * pr[n], fi[n] = M * pi[n];
