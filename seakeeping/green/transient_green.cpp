@@ -8,6 +8,10 @@
 
 #include "seakeeping/green/cerf_wrap.h"
 
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
 namespace hullopt::sk {
 namespace {
 
@@ -135,15 +139,17 @@ const PhiTable& Table() {
   return table;
 }
 
-const cd* NodeCoefficients(cd x, cd* delta) {
+const cd* NodeCoefficients(const cd* table, cd x, cd* delta) {
   // x is in the first quadrant: rounding by +0.5 truncation (cheaper than lround on this hot path).
   // Multiplication by 1/step rather than division: a point halfway between nodes may round to either, and
   // both are within the Taylor radius.
   const int i = static_cast<int>(x.real() * kInvGridStep + 0.5);
   const int j = static_cast<int>(x.imag() * kInvGridStep + 0.5);
   *delta = x - cd(i * kGridStep, j * kGridStep);
-  return &Table().coef[static_cast<std::size_t>((i * (kGridN + 1) + j) * kCoefficients)];
+  return table + static_cast<std::size_t>((i * (kGridN + 1) + j) * kCoefficients);
 }
+// The same with the table looked up here (one guarded static per call; the block forms below look it up once).
+const cd* NodeCoefficients(cd x, cd* delta) { return NodeCoefficients(Table().coef.data(), x, delta); }
 
 // Horner's rule in real arithmetic: std::complex multiplication carries a NaN/infinity recovery branch
 // (C99 Annex G) on every step; the values here are finite, and the products are the same.
@@ -187,13 +193,43 @@ PhiAndF DawsonIntegralTable(cd x) {
 // The same for L points at once, their Horner chains interleaved: each chain is a sequence of dependent
 // multiply-adds (latency-bound), so independent chains fill the pipeline; the arithmetic per point is that
 // of DawsonIntegralTableOnly / DawsonIntegralTable.
+#if defined(__SSE2__)
+// One complex Horner step p·d + c with p, c as [re, im] in one SSE2 register and d given as [dr, dr] and
+// [−di, di]: [pr·dr + (−pi·di), pi·dr + pr·di] + c, the same products and sums (in the same order up to the
+// exact commutation of one addition and an exact negation) as the scalar form, so the same bits, with half
+// the arithmetic instructions (no FMA contraction in either: the build has no -mfma).
+inline __m128d ComplexMulAdd(__m128d p, __m128d d_re, __m128d d_im_signed, __m128d c) {
+  const __m128d swapped = _mm_shuffle_pd(p, p, 1);  // [pi, pr]
+  return _mm_add_pd(_mm_add_pd(_mm_mul_pd(p, d_re), _mm_mul_pd(swapped, d_im_signed)), c);
+}
+inline __m128d Load(const cd* c) { return _mm_loadu_pd(reinterpret_cast<const double*>(c)); }
+inline cd Store(__m128d v) {
+  double out[2];
+  _mm_storeu_pd(out, v);
+  return {out[0], out[1]};
+}
+#endif
+
 template <int L>
 void DawsonIntegralTableOnlyN(const cd* x, cd* phi) {
-  double dr[L], di[L], pr[L], pi[L];
+  const cd* table = Table().coef.data();
   const cd* c[L];
+#if defined(__SSE2__)
+  __m128d d_re[L], d_im[L], p[L];
   for (int n = 0; n < L; ++n) {
     cd d;
-    c[n] = NodeCoefficients(x[n], &d);
+    c[n] = NodeCoefficients(table, x[n], &d);
+    d_re[n] = _mm_set1_pd(d.real()), d_im[n] = _mm_set_pd(d.imag(), -d.imag());
+    p[n] = Load(&c[n][kCoefficients - 1]);
+  }
+  for (int k = kCoefficients - 2; k >= 0; --k)
+    for (int n = 0; n < L; ++n) p[n] = ComplexMulAdd(p[n], d_re[n], d_im[n], Load(&c[n][k]));
+  for (int n = 0; n < L; ++n) phi[n] = Store(p[n]);
+#else
+  double dr[L], di[L], pr[L], pi[L];
+  for (int n = 0; n < L; ++n) {
+    cd d;
+    c[n] = NodeCoefficients(table, x[n], &d);
     dr[n] = d.real(), di[n] = d.imag();
     pr[n] = c[n][kCoefficients - 1].real(), pi[n] = c[n][kCoefficients - 1].imag();
   }
@@ -204,16 +240,38 @@ void DawsonIntegralTableOnlyN(const cd* x, cd* phi) {
       pr[n] = t;
     }
   for (int n = 0; n < L; ++n) phi[n] = cd(pr[n], pi[n]);
+#endif
 }
 
 template <int L>
 void DawsonIntegralTableN(const cd* x, PhiAndF* out) {
   constexpr int M = kCoefficients - 1;
-  double dr[L], di[L], pr[L], pi[L], fr[L], fi[L];
+  const cd* table = Table().coef.data();
   const cd* c[L];
+#if defined(__SSE2__)
+  __m128d d_re[L], d_im[L], p[L], f[L];
   for (int n = 0; n < L; ++n) {
     cd d;
-    c[n] = NodeCoefficients(x[n], &d);
+    c[n] = NodeCoefficients(table, x[n], &d);
+    d_re[n] = _mm_set1_pd(d.real()), d_im[n] = _mm_set_pd(d.imag(), -d.imag());
+    p[n] = Load(&c[n][M]);
+    f[n] = _mm_mul_pd(_mm_set1_pd(M), p[n]);
+  }
+  for (int k = M - 1; k >= 1; --k) {
+    const __m128d kk = _mm_set1_pd(k);
+    for (int n = 0; n < L; ++n) {
+      const __m128d ck = Load(&c[n][k]);
+      p[n] = ComplexMulAdd(p[n], d_re[n], d_im[n], ck);
+      f[n] = ComplexMulAdd(f[n], d_re[n], d_im[n], _mm_mul_pd(kk, ck));
+    }
+  }
+  for (int n = 0; n < L; ++n)
+    out[n] = {Store(ComplexMulAdd(p[n], d_re[n], d_im[n], Load(&c[n][0]))), Store(f[n])};
+#else
+  double dr[L], di[L], pr[L], pi[L], fr[L], fi[L];
+  for (int n = 0; n < L; ++n) {
+    cd d;
+    c[n] = NodeCoefficients(table, x[n], &d);
     dr[n] = d.real(), di[n] = d.imag();
     pr[n] = c[n][M].real(), pi[n] = c[n][M].imag();
     fr[n] = M * pr[n], fi[n] = M * pi[n];
@@ -231,6 +289,7 @@ void DawsonIntegralTableN(const cd* x, PhiAndF* out) {
     const double t = pr[n] * dr[n] - pi[n] * di[n] + c[n][0].real();
     out[n] = {cd(t, pr[n] * di[n] + pi[n] * dr[n] + c[n][0].imag()), cd(fr[n], fi[n])};
   }
+#endif
 }
 
 // Σ_{n>=1} c_n/(2n) x^{−2n}: the algebraic part of Φ − ½ ln x − (γ + ln 4)/4 (with a minus sign).
@@ -364,7 +423,7 @@ cd SpaceTimeIntegralFirstQuadrant(cd x, cd a, double gt2, cd log_x) {
 
 }  // namespace
 
-TransientGreenPair MakeTransientGreenPair(double Y, double Z, double g) {
+TransientGreenPair MakeTransientGreenPair(double Y, double Z, double g, bool with_log) {
   CheckArguments(Y, Z, 0.0, g);
   // Principal √a of a = |Z| − i|Y| with real arithmetic only (√a = (sqrt((r + |Z|)/2), −sqrt((r − |Z|)/2)),
   // r = |a| = |√a|²), and w = √g/(2√a) = √g conj(√a)/(2r).
@@ -373,7 +432,7 @@ TransientGreenPair MakeTransientGreenPair(double Y, double Z, double g) {
   TransientGreenPair out;
   out.a = cd(p, -Yabs);
   out.w = cd(scale * std::sqrt(0.5 * (r + p)), scale * std::sqrt(0.5 * std::fmax(r - p, 0.0)));
-  out.log_w = LogFirstQuadrant(out.w);
+  if (with_log) out.log_w = LogFirstQuadrant(out.w);
   out.conj = Y < 0;
   return out;
 }
@@ -420,6 +479,38 @@ void TransientGreenSpaceTimeIntegrals2(const TransientGreenPair& pair, const dou
     return;
   }
   for (int n = 0; n < 2; ++n) out[n] = TransientGreenSpaceTimeIntegral(pair, t[n], log_t[n], g);
+}
+
+void TransientGreenTimeIntegrals2x2(const TransientGreenPair pair[2], const double t[2], cd out[4]) {
+  const cd x[4] = {t[0] * pair[0].w, t[1] * pair[0].w, t[0] * pair[1].w, t[1] * pair[1].w};
+  constexpr double r2 = kAsymptoticRadius * kAsymptoticRadius;
+  for (int n = 0; n < 4; ++n)
+    if (!(std::norm(x[n]) < r2)) {
+      TransientGreenTimeIntegrals2(pair[0], t, out);
+      TransientGreenTimeIntegrals2(pair[1], t, out + 2);
+      return;
+    }
+  DawsonIntegralTableOnlyN<4>(x, out);
+  for (int n = 0; n < 4; ++n) out[n] = ConjIf(pair[n / 2].conj, 8.0 * out[n]);
+}
+
+void TransientGreenSpaceTimeIntegrals2x2(const TransientGreenPair pair[2], const double t[2], const double log_t[2],
+                                         double g, cd out[4]) {
+  const cd x[4] = {t[0] * pair[0].w, t[1] * pair[0].w, t[0] * pair[1].w, t[1] * pair[1].w};
+  constexpr double r2 = kAsymptoticRadius * kAsymptoticRadius;
+  for (int n = 0; n < 4; ++n)
+    if (!(std::norm(x[n]) < r2)) {
+      TransientGreenSpaceTimeIntegrals2(pair[0], t, log_t, g, out);
+      TransientGreenSpaceTimeIntegrals2(pair[1], t, log_t, g, out + 2);
+      return;
+    }
+  PhiAndF pf[4];
+  DawsonIntegralTableN<4>(x, pf);
+  for (int n = 0; n < 4; ++n) {
+    const TransientGreenPair& pr = pair[n / 2];
+    const double tn = t[n % 2];
+    out[n] = ConjIf(pr.conj, KFromTable(x[n], pr.a, g * tn * tn, cd(log_t[n % 2], 0.0) + pr.log_w, pf[n]));
+  }
 }
 
 }  // namespace hullopt::sk

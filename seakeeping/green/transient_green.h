@@ -52,8 +52,10 @@ struct TransientGreenPair {
   bool conj = false;           ///< Y < 0: every result is the conjugate of the |Y| one
 };
 
-/// The pair of (Y, Z) [m] with gravity g [m/s²]. Same errors as TransientGreen (without the lag).
-TransientGreenPair MakeTransientGreenPair(double Y, double Z, double g);
+/// The pair of (Y, Z) [m] with gravity g [m/s²]. Same errors as TransientGreen (without the lag). Without
+/// `with_log`, log_w is left zero: enough for H⁽⁻¹⁾ (TransientGreenTimeIntegral), which does not use it, and
+/// saves the logarithm and arctangent; K needs it.
+TransientGreenPair MakeTransientGreenPair(double Y, double Z, double g, bool with_log = true);
 
 /// H⁽⁻¹⁾ at lag t >= 0 [s] for a prepared pair (no argument checks: the strip kernel's hot path).
 std::complex<double> TransientGreenTimeIntegral(const TransientGreenPair& pair, double t);
@@ -68,6 +70,11 @@ std::complex<double> TransientGreenSpaceTimeIntegral(const TransientGreenPair& p
 void TransientGreenTimeIntegrals2(const TransientGreenPair& pair, const double t[2], std::complex<double> out[2]);
 void TransientGreenSpaceTimeIntegrals2(const TransientGreenPair& pair, const double t[2], const double log_t[2],
                                        double g, std::complex<double> out[2]);
+
+/// The same for two pairs at once (four interleaved table evaluations): out[2p + n] is pair[p] at t[n].
+void TransientGreenTimeIntegrals2x2(const TransientGreenPair pair[2], const double t[2], std::complex<double> out[4]);
+void TransientGreenSpaceTimeIntegrals2x2(const TransientGreenPair pair[2], const double t[2], const double log_t[2],
+                                         double g, std::complex<double> out[4]);
 
 /// Complex Dawson function F(x) = e^{−x²} ∫_0^x e^{u²} du (libcerf).
 std::complex<double> Dawson(std::complex<double> x);

@@ -87,8 +87,14 @@ std::vector<Level> ComputeLevels(const FieldSet& f, const std::vector<Panel>& sr
   std::vector<std::complex<double>> h(static_cast<std::size_t>(ne) * nl);
   const bool both_positive = nl == 2 && lags[0] > 0.0 && lags[1] > 0.0;  // the interleaved two-lag form
   for (int i = 0; velocity && i < nf; ++i) {
-    for (int q = 0; q < ne; ++q) {
-      const TransientGreenPair pair = MakeTransientGreenPair(f.cy[i] - e.y[q], f.cz[i] + e.z[q], g);
+    int q0 = 0;
+    for (; both_positive && q0 + 1 < ne; q0 += 2) {  // two end points at once: four interleaved chains
+      const TransientGreenPair pair[2] = {MakeTransientGreenPair(f.cy[i] - e.y[q0], f.cz[i] + e.z[q0], g, false),
+                                          MakeTransientGreenPair(f.cy[i] - e.y[q0 + 1], f.cz[i] + e.z[q0 + 1], g, false)};
+      TransientGreenTimeIntegrals2x2(pair, lags.data(), &h[q0 * nl]);
+    }
+    for (int q = q0; q < ne; ++q) {
+      const TransientGreenPair pair = MakeTransientGreenPair(f.cy[i] - e.y[q], f.cz[i] + e.z[q], g, false);
       if (both_positive)
         TransientGreenTimeIntegrals2(pair, lags.data(), &h[q * nl]);
       else
@@ -104,7 +110,13 @@ std::vector<Level> ComputeLevels(const FieldSet& f, const std::vector<Panel>& sr
   }
   // Momentum: Σ_q wnz_q ∫_panel Re H⁽⁻¹⁾ ds, exact along the panel through K (memory_influence.h).
   for (std::size_t p = 0; p < f.qy.size(); ++p) {
-    for (int q = 0; q < ne; ++q) {
+    int q0 = 0;
+    for (; both_positive && q0 + 1 < ne; q0 += 2) {
+      const TransientGreenPair pair[2] = {MakeTransientGreenPair(f.qy[p] - e.y[q0], f.qz[p] + e.z[q0], g),
+                                          MakeTransientGreenPair(f.qy[p] - e.y[q0 + 1], f.qz[p] + e.z[q0 + 1], g)};
+      TransientGreenSpaceTimeIntegrals2x2(pair, lags.data(), log_lag.data(), g, &h[q0 * nl]);
+    }
+    for (int q = q0; q < ne; ++q) {
       const TransientGreenPair pair = MakeTransientGreenPair(f.qy[p] - e.y[q], f.qz[p] + e.z[q], g);
       if (both_positive)
         TransientGreenSpaceTimeIntegrals2(pair, lags.data(), log_lag.data(), g, &h[q * nl]);
