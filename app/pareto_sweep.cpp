@@ -10,6 +10,8 @@
 #include <nlohmann/json.hpp>
 #include <vector>
 
+#include "io/config_path.h"
+#include "io/csv_fields.h"
 #include "io/input_error.h"
 #include "io/svg_plot.h"
 #include "io/yaml_map.h"
@@ -20,6 +22,8 @@ namespace {
 // The anchor's minimum is approached by the local algorithm only to its tolerance: the first limit sits this
 // fraction above it so the first point's start (the anchor) is feasible with margin.
 constexpr double kAnchorMargin = 1e-3;
+// Starts per point (optimize.pareto.starts): run 0 from the previous point, the others at random points.
+constexpr int kDefaultPointStarts = 4;
 
 struct Best {
   double objective = NAN;
@@ -34,15 +38,61 @@ Best ReadBest(const std::string& dir) {
   return {s["best_objective"].get<double>(), s["best"]};
 }
 
-double SeaMean(const nlohmann::json& seas, const std::vector<double>& w) {
-  double s = 0, ws = 0;
-  size_t i = 0;
-  for (auto it = seas.begin(); it != seas.end(); ++it, ++i) {
-    const double wi = i < w.size() ? w[i] : 1.0;
-    s += wi * it.value().get<double>();
-    ws += wi;
+// One feasible evaluation of a point's log.
+struct Record {
+  double objective = NAN;
+  double q = NAN;         // the swept quantity
+  std::vector<double> x;  // the variables, in the log's column order
+  std::string source;     // the point folder
+  long evaluation = -1;
+};
+
+std::string PointName(int k) {
+  char name[32];
+  std::snprintf(name, sizeof name, "point_%02d", k);
+  return name;
+}
+
+// Appends the feasible, evaluated rows of history.csv to *out (variables: the columns between `evaluation`
+// and `objective`, whose names go to *names).
+void ReadFeasible(const std::string& path, const std::string& source, const std::string& quantity,
+                  std::vector<std::string>* names, std::vector<Record>* out) {
+  std::ifstream f(path);
+  std::string line;
+  if (!f || !std::getline(f, line)) throw io::InputError(path + ": missing after the run");
+  const std::vector<std::string> head = io::SplitCsvLine(line);
+  auto column = [&](const std::string& n) -> size_t {
+    for (size_t j = 0; j < head.size(); ++j)
+      if (head[j] == n) return j;
+    throw io::InputError(path + ": no column '" + n + "'");
+  };
+  const size_t c_obj = column("objective"), c_feas = column("feasible"), c_q = column(quantity);
+  names->assign(head.begin() + 1, head.begin() + static_cast<long>(c_obj));
+  while (std::getline(f, line)) {
+    const std::vector<std::string> c = io::SplitCsvLine(line);
+    if (c.size() != head.size() || c[c_feas] != "1") continue;
+    Record r;
+    r.objective = std::stod(c[c_obj]);
+    r.q = std::stod(c[c_q]);
+    if (!std::isfinite(r.objective) || !std::isfinite(r.q)) continue;
+    for (size_t j = 1; j < c_obj; ++j) r.x.push_back(std::stod(c[j]));
+    r.source = source;
+    r.evaluation = std::stol(c[0]);
+    out->push_back(std::move(r));
   }
-  return s / ws;
+}
+
+double ReadBaselineObjective(const std::string& dir) {
+  std::ifstream f(dir + "/summary.json");
+  const nlohmann::json s = nlohmann::json::parse(f);
+  return s["baseline_objective"].is_number() ? s["baseline_objective"].get<double>() : NAN;
+}
+
+std::string ObjectiveAxis(const std::string& measure) {
+  if (measure == "rms_accel") return "objective rms accel [g]";
+  if (measure == "downtime_pct") return "objective: time criterion not met [%]";
+  if (measure == "scatter_msi") return "objective scatter-weighted MSI [%]";
+  return "objective MSI [%]";
 }
 
 }  // namespace
@@ -71,21 +121,25 @@ void RunParetoSweep(const std::string& config_file, const std::string& out_dir,
   const double from_given = p.Number("from", 0.0);
   const double to = p.Number("to");
   if (has_from && !(to > from_given)) p.Fail("to", "must be > from");
+  const int starts = p.Integer("starts", kDefaultPointStarts);
+  if (starts < 1 || starts > 1000) p.Fail("starts", "must lie in [1, 1000]");
   p.Finish();
   const std::string unit = quantity.substr(quantity.rfind('_') + 1);
   const std::string base = quantity.substr(0, quantity.rfind('_'));
   const std::string key = base + "_max_" + unit;  // e.g. P_E_max_kW limits P_E_kW
   if (raw["optimize"]["constraints"] && raw["optimize"]["constraints"][key])
     p.Fail("quantity", "the campaign already constrains " + key + "; the sweep sets it");
-  std::vector<double> weights;
-  if (raw["optimize"]["objective"] && raw["optimize"]["objective"]["sea_weights"])
-    weights = raw["optimize"]["objective"]["sea_weights"].as<std::vector<double>>();
   const std::string measure = raw["optimize"]["objective"] && raw["optimize"]["objective"]["measure"]
                                   ? raw["optimize"]["objective"]["measure"].as<std::string>()
                                   : "msi";
   if (measure == quantity) p.Fail("quantity", "the campaign objective is already " + quantity);
   std::filesystem::create_directories(out_dir);
   raw["optimize"].remove("pareto");
+  // The generated configs live in out_dir: a file the config names by a relative path is named absolutely.
+  if (raw["operability"] && raw["operability"]["scatter_csv"])
+    raw["operability"]["scatter_csv"] =
+        io::ResolveConfigPath(raw["operability"]["scatter_csv"].as<std::string>(), config_file);
+  const int seed = raw["optimize"]["seed"] ? raw["optimize"]["seed"].as<int>() : 1;
 
   // 1. Anchor: minimise the quantity.
   YAML::Node anchor = YAML::Clone(raw);
@@ -109,29 +163,36 @@ void RunParetoSweep(const std::string& config_file, const std::string& out_dir,
   if (!(to > from))
     throw io::InputError(config_file + ": key 'optimize.pareto.to': must be above " + std::to_string(from));
 
-  std::ofstream csv(out_dir + "/pareto.csv");
-  csv << "point,limit_" << quantity << ",objective," << quantity << ",run_dir";
-  const nlohmann::json& vars0 = prev.best["variables"];
-  for (auto it = vars0.begin(); it != vars0.end(); ++it) csv << "," << it.key();
-  csv << "\n" << std::setprecision(10);
-  auto row = [&](const std::string& name, double limit, double obj, double q, const std::string& dir,
-                 const nlohmann::json& v) {
-    csv << name << "," << (std::isfinite(limit) ? std::to_string(limit) : "") << "," << obj << "," << q << ","
-        << dir;
-    for (auto it = v.begin(); it != v.end(); ++it) csv << "," << it.value().get<double>();
-    csv << "\n";
-    csv.flush();
+  // Every feasible evaluation of every point's log (feasible for its own limit, so for any limit its quantity
+  // satisfies): the front point for a limit is the best of them whose quantity is within it.
+  const double tol = raw["optimize"]["feasibility_tol"] ? raw["optimize"]["feasibility_tol"].as<double>() : 1e-6;
+  std::vector<Record> archive;
+  std::vector<std::string> variable_names;
+  auto best_within = [&](double limit) -> const Record* {
+    const Record* b = nullptr;
+    for (const Record& r : archive)
+      if ((r.q - limit) / std::fabs(limit) <= tol && (!b || r.objective < b->objective)) b = &r;
+    return b;
   };
-  row("anchor", NAN, SeaMean(prev.best["seas"], weights), qmin, "anchor", prev.best["variables"]);
-  std::vector<double> fq, fo;
+  std::vector<double> limits, run_best;
+  const nlohmann::json anchor_variables = prev.best["variables"];
+  double anchor_objective = NAN;
   for (int k = 1; k <= points; ++k) {
     const double eps = from + (to - from) * (k - 1) / (points - 1);
+    limits.push_back(eps);
     YAML::Node c = YAML::Clone(raw);
     c["optimize"]["constraints"][key] = eps;
-    for (auto it = prev.best["variables"].begin(); it != prev.best["variables"].end(); ++it)
-      c["optimize"]["start"][it.key()] = it.value().get<double>();
-    char name[32];
-    std::snprintf(name, sizeof name, "point_%02d", k);
+    // Start: the best design known for the previous limit (the anchor for the first point), feasible here.
+    if (const Record* r = k > 1 ? best_within(limits[k - 2]) : nullptr)
+      for (size_t v = 0; v < variable_names.size(); ++v) c["optimize"]["start"][variable_names[v]] = r->x[v];
+    else
+      for (auto it = anchor_variables.begin(); it != anchor_variables.end(); ++it)
+        c["optimize"]["start"][it.key()] = it.value().get<double>();
+    // Run 0 continues from that start; runs 1.. start at seeded random points of the box, other ones for every
+    // point, and escape the local minimum run 0 may stop in.
+    c["optimize"]["starts"] = starts;
+    c["optimize"]["seed"] = seed + k - 1;
+    const std::string name = PointName(k);
     const std::string dir = out_dir + "/" + name, cfg = out_dir + "/" + name + ".yaml";
     {
       std::ofstream f(cfg);
@@ -140,20 +201,44 @@ void RunParetoSweep(const std::string& config_file, const std::string& out_dir,
     }
     std::filesystem::create_directories(dir);
     run_optimize(cfg, dir);
-    const Best b = ReadBest(dir);
-    const double q = b.best["constrained_quantities"][quantity].get<double>();
-    row(name, eps, b.objective, q, name, b.best["variables"]);
-    fq.push_back(q);
-    fo.push_back(b.objective);
-    prev = b;
+    run_best.push_back(ReadBest(dir).objective);
+    if (k == 1) anchor_objective = ReadBaselineObjective(dir);  // point 1's base design is the anchor's best
+    ReadFeasible(dir + "/history.csv", name, quantity, &variable_names, &archive);
   }
+
+  std::ofstream csv(out_dir + "/pareto.csv");
+  csv << "point,limit_" << quantity << ",objective," << quantity << ",run_dir,evaluation,run_best_objective";
+  for (const auto& v : variable_names) csv << "," << v;
+  csv << "\n" << std::setprecision(10);
+  csv << "anchor,," << anchor_objective << "," << qmin << ",anchor,,";
+  for (const auto& v : variable_names) csv << "," << anchor_variables[v].get<double>();
+  csv << "\n";
+  std::vector<double> fq, fo;
+  for (int k = 1; k <= points; ++k) {
+    const Record* r = best_within(limits[k - 1]);
+    if (!r) throw io::InputError(out_dir + "/" + PointName(k) + ": no feasible design for the limit");
+    csv << PointName(k) << "," << std::to_string(limits[k - 1]) << "," << r->objective << "," << r->q << ","
+        << r->source << "," << r->evaluation << "," << run_best[k - 1];
+    for (double x : r->x) csv << "," << x;
+    csv << "\n";
+    fq.push_back(r->q);
+    fo.push_back(r->objective);
+    // front_NN.yaml: point k's config started at its front design (re-evaluated as the run's baseline).
+    YAML::Node c = YAML::LoadFile(out_dir + "/" + PointName(k) + ".yaml");
+    for (size_t v = 0; v < variable_names.size(); ++v) c["optimize"]["start"][variable_names[v]] = r->x[v];
+    c["optimize"]["starts"] = 1;
+    std::ofstream f(out_dir + "/front_" + PointName(k).substr(6) + ".yaml");
+    f << "# hullopt optimize — Pareto front point " << k << " (" << key << " = " << limits[k - 1]
+      << "), started at its design: " << r->source << "/history.csv evaluation " << r->evaluation << "\n"
+      << c << "\n";
+  }
+  csv.close();
   io::PlotFigure fig;
   fig.title = "Pareto front (ε-constraint on " + quantity + ")";
-  fig.footnote = "each point: minimise the campaign objective with " + key + " = ε; anchor: minimum " + quantity;
-  io::PlotPanel& pn = fig.AddPanel("", quantity, measure == "rms_accel" ? "objective rms accel [g]" : "objective MSI [%]");
+  fig.footnote = "each point: the best feasible design of the sweep with " + key + " <= ε; anchor: minimum " + quantity;
+  io::PlotPanel& pn = fig.AddPanel("", quantity, ObjectiveAxis(measure));
   pn.series.push_back(io::PlotSeries::LineMarkers("front", fq, fo));
-  pn.series.push_back(io::PlotSeries::Markers("anchor (min " + quantity + ")", {qmin},
-                                              {SeaMean(ReadBest(anchor_dir).best["seas"], weights)}));
+  pn.series.push_back(io::PlotSeries::Markers("anchor (min " + quantity + ")", {qmin}, {anchor_objective}));
   io::WriteSvg(fig, out_dir + "/pareto.svg");
   std::printf("pareto: %d points of %s %.6g..%.6g; wrote pareto.csv, pareto.svg and anchor/, point_NN/ in %s\n",
               points, quantity.c_str(), from, to, out_dir.c_str());

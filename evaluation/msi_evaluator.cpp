@@ -31,10 +31,18 @@ class MsiEvaluator : public opt::Evaluator, public ResolutionCheckable {
     }
     sk::RaoTable rao;
     sk::DesignEvaluation ev;
+    sk::OperabilityResult op;
     try {  // a non-finite RAO or response is refused where it is computed: this design is not produced
       rao = ComputeDesignRaos(d, SeaFrequencies(d));
-      ev = sk::EvaluateDesign(rao, d.Extent(), spectra_, {}, o_.evaluation);
+      if (IsOperability())
+        op = sk::EvaluateOperability(rao, d.Extent(), o_.diagram, o_.criteria, {}, o_.evaluation);
+      else
+        ev = sk::EvaluateDesign(rao, d.Extent(), spectra_, {}, o_.evaluation);
     } catch (const InputError& e) {
+      r.produced = false;
+      r.error = e.what();
+      return r;
+    } catch (const std::invalid_argument& e) {  // EvaluateOperability's refusal of a response
       r.produced = false;
       r.error = e.what();
       return r;
@@ -49,7 +57,11 @@ class MsiEvaluator : public opt::Evaluator, public ResolutionCheckable {
       const auto& p = o_.position < 0 ? s.mean : s.positions[o_.position];
       r.sea_values.push_back(o_.measure == Measure::kRmsAccel ? p.rms_accel_g : p.msi_pct);
     }
-    r.objective = WeightedMean(r.sea_values);
+    for (const auto& c : op.cells)
+      r.sea_values.push_back(o_.position < 0 ? c.evaluation.mean.msi_pct : c.evaluation.positions[o_.position].msi_pct);
+    r.objective = WeightedMean(r.sea_values);  // kScatterMsi: the weights are the cells' probabilities
+    if (o_.measure == Measure::kDowntime)
+      r.objective = 100.0 - (o_.criterion < 0 ? op.all_criteria_time_pct : op.criterion_time_pct[o_.criterion]);
     // Calm-water resistance at the design speed (about 2 ms CPU for the default catamaran, bench_resistance).
     res::ResistanceAtSpeed rs;
     try {
@@ -87,7 +99,8 @@ class MsiEvaluator : public opt::Evaluator, public ResolutionCheckable {
 
   double ObjectiveImplied(const std::vector<double>&, const std::vector<double>& sea_values) const override {
     // A power objective is not implied by the per-sea columns: such rows are checked by the spot recomputation.
-    if (o_.measure == Measure::kEffectivePower) return NAN;
+    // Nor is the time a criterion is met (it may be a limit on another measure than the per-cell MSI columns).
+    if (o_.measure == Measure::kEffectivePower || o_.measure == Measure::kDowntime) return NAN;
     return sea_values.size() == o_.sea_weights.size() ? WeightedMean(sea_values) : NAN;
   }
 
@@ -95,8 +108,12 @@ class MsiEvaluator : public opt::Evaluator, public ResolutionCheckable {
     std::vector<std::string> n;
     for (std::size_t i = 0; i < o_.seas.size(); ++i) {
       char buf[96];
-      std::snprintf(buf, sizeof buf, "%s_Hs%.2g_Tz%.3g", o_.measure == Measure::kRmsAccel ? "rms_accel_g" : "msi_pct",
-                    o_.seas[i].Hs_m, o_.seas[i].Tz_s);
+      if (IsOperability())  // scatter cells: Hs 10.5 and 11.5 must not both print as 1e+01
+        std::snprintf(buf, sizeof buf, "msi_pct_Hs%.4g_%s%.4g", o_.diagram.cells[i].Hs_m,
+                      o_.diagram.period_is_tp ? "Tp" : "Tz", o_.diagram.cells[i].period_s);
+      else
+        std::snprintf(buf, sizeof buf, "%s_Hs%.2g_Tz%.3g", o_.measure == Measure::kRmsAccel ? "rms_accel_g" : "msi_pct",
+                      o_.seas[i].Hs_m, o_.seas[i].Tz_s);
       n.push_back(buf);
     }
     return n;
@@ -104,7 +121,12 @@ class MsiEvaluator : public opt::Evaluator, public ResolutionCheckable {
   // Short enough for a y axis: "mean MSI over 2 seas [%]", "rms accel. LCG [g]".
   std::string ObjectiveLabel() const override {
     if (o_.measure == Measure::kEffectivePower) return "P_E at the design speed [kW]";
-    static const char* const kPositions[] = {"forward", "LCG", "transom"};
+    if (o_.measure == Measure::kDowntime)
+      return "time criterion " + (o_.criterion < 0 ? std::string("(all)") : o_.criteria[o_.criterion].name) +
+             " not met [%]";
+    if (o_.measure == Measure::kScatterMsi)
+      return std::string("scatter-weighted MSI ") + (o_.position < 0 ? "mean" : kPositionNames[o_.position]) + " [%]";
+    const char* const* kPositions = kPositionNames;
     const bool accel = o_.measure == Measure::kRmsAccel;
     std::string label = o_.position < 0 ? std::string(accel ? "mean rms accel." : "mean MSI")
                                         : std::string(accel ? "rms accel. " : "MSI ") + kPositions[o_.position];
@@ -131,6 +153,8 @@ class MsiEvaluator : public opt::Evaluator, public ResolutionCheckable {
     return sum / wsum;
   }
   using Measure = MsiObjectiveOptions::Measure;
+  static constexpr const char* kPositionNames[] = {"forward", "LCG", "transom"};
+  bool IsOperability() const { return o_.measure == Measure::kScatterMsi || o_.measure == Measure::kDowntime; }
   DesignBasis basis_;
   std::vector<const hull::DesignVariableField*> fields_;
   MsiObjectiveOptions o_;

@@ -1,7 +1,8 @@
 #pragma once
 // The seakeeping objective of a campaign: free design variables → parametric hull at fixed displacement →
 // RAOs by the time-domain strip method → rms accelerations and MSI in the campaign's seas, and the calm-water
-// resistance at the design speed. io/msi_objective_config.h reads its options from a config.
+// resistance at the design speed, or the design's operability over a wave scatter diagram (seas/operability.h).
+// io/msi_objective_config.h reads its options from a config.
 //
 // Quantities for constraints: L_m, B_m, T_m, B_overall_m, displacement_t, Cb, Cp, Cwp, Cvp, Fr, GM_T_m, GM_L_m,
 // and the calm-water resistance at the design speed R_T_kN, R_W_kN, P_E_kW.
@@ -13,16 +14,24 @@
 #include "optimizer/evaluator.h"
 #include "resistance/calm_water_resistance.h"
 #include "seas/design_evaluation.h"
+#include "seas/operability.h"
 #include "seas/resolution_check.h"
 
 namespace hullopt::eval {
 
 struct MsiObjectiveOptions {
-  enum class Measure { kMsi, kRmsAccel, kEffectivePower };
-  Measure measure = Measure::kMsi;  ///< MSI [%], rms vertical acceleration [g] or P_E [kW]
+  /// kScatterMsi: the scatter-weighted mean MSI [%] over `diagram` (Σ p MSI / Σ p at `position`);
+  /// kDowntime: 100 - the percentage of time `criterion` is met on `diagram` [% of time], minimised.
+  enum class Measure { kMsi, kRmsAccel, kEffectivePower, kScatterMsi, kDowntime };
+  Measure measure = Measure::kMsi;  ///< MSI [%], rms vertical acceleration [g], P_E [kW] or operability
   int position = -1;                ///< -1: mean of the passenger positions; 0 forward, 1 LCG, 2 transom
+  /// The seas of the per-sea values. For the operability measures: the diagram's cells (diagram.Sea(i)),
+  /// weighted by their probabilities, and the per-sea values are the cells' MSI [%] at `position`.
   std::vector<sk::SeaState> seas;
   std::vector<double> sea_weights;  ///< one per sea, >= 0, not all 0
+  sk::ScatterDiagram diagram;                      ///< operability measures only
+  std::vector<sk::OperabilityCriterion> criteria;  ///< operability measures only
+  int criterion = -1;                              ///< kDowntime: index into criteria; -1: all of them together
   sk::EvaluationOptions evaluation;
   res::ResistanceOptions resistance;
 };

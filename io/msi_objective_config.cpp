@@ -6,6 +6,7 @@
 #include "io/design_config.h"
 #include "io/input_error.h"
 #include "io/motion_config.h"
+#include "io/operability_config.h"
 #include "io/resistance_config.h"
 #include "io/seas_config.h"
 
@@ -15,14 +16,45 @@ std::unique_ptr<opt::Evaluator> ReadMsiObjective(YamlMap& root, YamlMap& objecti
                                                  const opt::CampaignDefinition& campaign) {
   using Measure = eval::MsiObjectiveOptions::Measure;
   eval::MsiObjectiveOptions o;
-  const std::string measure = objective.Choice("measure", {"msi", "rms_accel", "P_E_kW"}, "msi");
-  o.measure = measure == "rms_accel" ? Measure::kRmsAccel
-              : measure == "P_E_kW"  ? Measure::kEffectivePower
-                                     : Measure::kMsi;
+  const std::string measure =
+      objective.Choice("measure", {"msi", "rms_accel", "P_E_kW", "scatter_msi", "downtime_pct"}, "msi");
+  o.measure = measure == "rms_accel"      ? Measure::kRmsAccel
+              : measure == "P_E_kW"       ? Measure::kEffectivePower
+              : measure == "scatter_msi"  ? Measure::kScatterMsi
+              : measure == "downtime_pct" ? Measure::kDowntime
+                                          : Measure::kMsi;
   const std::string pos = objective.Choice("position", {"mean", "forward", "lcg", "transom"}, "mean");
   o.position = pos == "mean" ? -1 : pos == "forward" ? 0 : pos == "lcg" ? 1 : 2;
-  o.seas = ReadSeas(root);
-  o.sea_weights.assign(o.seas.size(), 1.0);
+  const bool operability = o.measure == Measure::kScatterMsi || o.measure == Measure::kDowntime;
+  if (objective.Has("criterion") && o.measure != Measure::kDowntime)
+    objective.Fail("criterion", "only with measure: downtime_pct");
+  if (operability) {
+    // The cells of the operability: block (the reader of `hullopt evaluate`) are the campaign's seas, weighted
+    // by their probabilities; a seas: list is not used (accepted, so one config serves both kinds of objective).
+    if (!root.Has("operability"))
+      objective.Fail("measure", measure + " needs an operability: block (scatter_csv, criteria; docs/evaluate.md)");
+    if (objective.Has("sea_weights"))
+      objective.Fail("sea_weights", "not with measure: " + measure + " (the cells' probabilities weight them)");
+    OperabilityConfig op = ParseOperability(root, {});
+    root.Skip("seas");
+    o.diagram = std::move(op.diagram);
+    o.criteria = std::move(op.criteria);
+    for (std::size_t i = 0; i < o.diagram.cells.size(); ++i) {
+      o.seas.push_back(o.diagram.Sea(i));
+      o.sea_weights.push_back(o.diagram.cells[i].probability);
+    }
+    if (o.measure == Measure::kDowntime) {
+      std::vector<std::string> names = {"all"};
+      for (const auto& c : o.criteria) names.push_back(c.name);
+      const std::string criterion = objective.Choice("criterion", names, "all");
+      for (std::size_t k = 0; k < o.criteria.size(); ++k)
+        if (o.criteria[k].name == criterion) o.criterion = static_cast<int>(k);
+    }
+  } else {
+    root.Skip("operability");  // e.g. the P_E anchor of a Pareto sweep of an operability objective
+    o.seas = ReadSeas(root);
+    o.sea_weights.assign(o.seas.size(), 1.0);
+  }
   if (objective.Has("sea_weights")) {
     o.sea_weights = objective.Numbers("sea_weights");
     if (o.sea_weights.size() != o.seas.size())

@@ -3,8 +3,12 @@
 //
 //   optimize:
 //     objective: { measure: msi, position: mean, sea_weights: [1, 1] }   # defaults shown
-//       measure: msi [%] | rms_accel [g] | P_E_kW (effective power at the design speed, resistance/);
+//       measure: msi [%] | rms_accel [g] | P_E_kW (effective power at the design speed, resistance/)
+//                | scatter_msi [%] (scatter-weighted mean MSI over the operability: block's diagram)
+//                | downtime_pct [% of time] (100 - time `criterion` is met; criterion: <name> | all);
 //       position: mean | forward | lcg | transom
+//   operability: { scatter_csv: ..., criteria: [...] }   # io/operability_config.h; for the two operability
+//                                                        # measures, whose cells replace the seas: list
 //   resistance: { form_factor: 1.0, ... }   # optional model options (io/resistance_config.h), no speed lists
 //   seas: [...]                         # io/seas_config.h
 //   mass: { kyy_over_L: 0.25, kg_over_T: 1.0 }   # optional; mass = displacement, LCG = LCB always

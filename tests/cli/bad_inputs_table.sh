@@ -307,6 +307,27 @@ w design_kyy "hull: { parametric: { $P } }
 speed: { kn: 40 }
 mass: { kyy_m: 5, kyy_over_L: 0.25 }"
 run design_kyy 1 "give kyy_m or kyy_over_L, not both" - -- design "$T/design_kyy.yaml" --out "$T/o59"
+printf 'Hs_m\\Tz_s,5.5,7.5\n1.0,0.6,\n3.0,,0.3\n' > "$T/route_09.csv"
+printf 'Hs_m\\Tz_s,5.5\n1.0,1\n' > "$T/route_one.csv"
+DESC='campaign objective `measure: scatter_msi` without an `operability:` block'
+w op_none "$OPT
+optimize: { variables: { L_over_B: [8, 16] }, objective: { measure: scatter_msi } }"
+run op_none 1 "needs an operability: block" - -- optimize "$T/op_none.yaml" --out "$T/o60"
+DESC='campaign objective `measure: downtime_pct` naming no criterion of the `operability:` block'
+w op_crit "$OPT
+operability: { scatter_csv: route_one.csv, criteria: [ { msi_max_pct: 20, name: comfort } ] }
+optimize: { variables: { L_over_B: [8, 16] }, objective: { measure: downtime_pct, criterion: comfrt } }"
+run op_criterion 1 "key 'optimize.objective.criterion'" - -- optimize "$T/op_crit.yaml" --out "$T/o61"
+DESC='campaign operability objective on a scatter diagram whose probabilities sum to 0.9'
+w op_sum "$OPT
+operability: { scatter_csv: route_09.csv, criteria: [ { msi_max_pct: 20 } ] }
+optimize: { variables: { L_over_B: [8, 16] }, objective: { measure: scatter_msi } }"
+run op_sum 1 "probabilities sum to 0.9, not 1" - -- explore "$T/op_sum.yaml" --out "$T/o62"
+DESC='`sea_weights` with the operability objective `measure: scatter_msi`'
+w op_weights "$OPT
+operability: { scatter_csv: route_one.csv, criteria: [ { msi_max_pct: 20 } ] }
+optimize: { variables: { L_over_B: [8, 16] }, objective: { measure: scatter_msi, sea_weights: [1] } }"
+run op_weights 1 "the cells' probabilities weight them" - -- optimize "$T/op_weights.yaml" --out "$T/o63"
 
 # Not a row: without a mass block, hydrostatics.json's KG is the documented default, the draught.
 w nomass "hull: { parametric: { $P } }"
