@@ -19,7 +19,7 @@ for res in "20 8" "40 14"; do
     cp "$cfg" "$out"
     printf 'solver: { sections: %s, panels: %s }\n' "$1" "$2" >> "$out"
   done
-  sed -e "s#configs/davis-holloway-2003/#$dir/hulls/#" "$study" > "$dir/study.yaml"
+  sed -e "s#\(config: *\)\(configs/\)\?davis-holloway-2003/#\1$dir/hulls/#" "$study" > "$dir/study.yaml"
   printf 'resolution_check: { enabled: true, factor: 2 }\n' >> "$dir/study.yaml"
   "$bin" evaluate "$dir/study.yaml" --out "$dir/out" > "$dir/stdout.txt" 2> "$dir/stderr.txt"
 done

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "seakeeping/green/cerf_wrap.h"
+#include "seakeeping/green/unit_arctangent.h"
 
 #if defined(__SSE2__)
 #include <emmintrin.h>
@@ -425,14 +426,19 @@ cd SpaceTimeIntegralFirstQuadrant(cd x, cd a, double gt2, cd log_x) {
 
 TransientGreenPair MakeTransientGreenPair(double Y, double Z, double g, bool with_log) {
   CheckArguments(Y, Z, 0.0, g);
+  return MakeTransientGreenPairInFluid(Y, Z, 0.5 * std::sqrt(g), with_log);
+}
+
+TransientGreenPair MakeTransientGreenPairInFluid(double Y, double Z, double half_sqrt_g, bool with_log) {
   // Principal √a of a = |Z| − i|Y| with real arithmetic only (√a = (sqrt((r + |Z|)/2), −sqrt((r − |Z|)/2)),
   // r = |a| = |√a|²), and w = √g/(2√a) = √g conj(√a)/(2r).
   const double p = -Z, Yabs = std::fabs(Y), r = std::sqrt(p * p + Yabs * Yabs);
-  const double scale = std::sqrt(g) / (2.0 * r);
+  const double scale = half_sqrt_g / r;
   TransientGreenPair out;
   out.a = cd(p, -Yabs);
   out.w = cd(scale * std::sqrt(0.5 * (r + p)), scale * std::sqrt(0.5 * std::fmax(r - p, 0.0)));
-  if (with_log) out.log_w = LogFirstQuadrant(out.w);
+  // ln w: arg w = ½ arg(conj a) in [0, π/4], whose tangent is the half-angle |Y|/(r + |Z|) (no cancellation).
+  if (with_log) out.log_w = cd(0.5 * std::log(std::norm(out.w)), UnitArctangent(Yabs / (r + p)));
   out.conj = Y < 0;
   return out;
 }

@@ -57,6 +57,10 @@ struct TransientGreenPair {
 /// saves the logarithm and arctangent; K needs it.
 TransientGreenPair MakeTransientGreenPair(double Y, double Z, double g, bool with_log = true);
 
+/// The same without argument checks, with half_sqrt_g = √g/2 [m^½/s] computed once by the caller: the strip
+/// kernel's hot path, whose field points lie strictly in the fluid (Z < 0, finite: checked with the panels).
+TransientGreenPair MakeTransientGreenPairInFluid(double Y, double Z, double half_sqrt_g, bool with_log = true);
+
 /// H⁽⁻¹⁾ at lag t >= 0 [s] for a prepared pair (no argument checks: the strip kernel's hot path).
 std::complex<double> TransientGreenTimeIntegral(const TransientGreenPair& pair, double t);
 

@@ -85,16 +85,19 @@ std::vector<Level> ComputeLevels(const FieldSet& f, const std::vector<Panel>& sr
   std::vector<double> log_lag(nl, 0.0);
   for (int l = 0; l < nl; ++l) log_lag[l] = lags[l] > 0.0 ? std::log(lags[l]) : 0.0;
   std::vector<std::complex<double>> h(static_cast<std::size_t>(ne) * nl);
+  // Field points are collocation and Gauss points strictly below z = 0 (CheckPanels), so the pairs need no
+  // argument checks.
+  const double half_sqrt_g = 0.5 * std::sqrt(g);
   const bool both_positive = nl == 2 && lags[0] > 0.0 && lags[1] > 0.0;  // the interleaved two-lag form
   for (int i = 0; velocity && i < nf; ++i) {
     int q0 = 0;
     for (; both_positive && q0 + 1 < ne; q0 += 2) {  // two end points at once: four interleaved chains
-      const TransientGreenPair pair[2] = {MakeTransientGreenPair(f.cy[i] - e.y[q0], f.cz[i] + e.z[q0], g, false),
-                                          MakeTransientGreenPair(f.cy[i] - e.y[q0 + 1], f.cz[i] + e.z[q0 + 1], g, false)};
+      const TransientGreenPair pair[2] = {MakeTransientGreenPairInFluid(f.cy[i] - e.y[q0], f.cz[i] + e.z[q0], half_sqrt_g, false),
+                                          MakeTransientGreenPairInFluid(f.cy[i] - e.y[q0 + 1], f.cz[i] + e.z[q0 + 1], half_sqrt_g, false)};
       TransientGreenTimeIntegrals2x2(pair, lags.data(), &h[q0 * nl]);
     }
     for (int q = q0; q < ne; ++q) {
-      const TransientGreenPair pair = MakeTransientGreenPair(f.cy[i] - e.y[q], f.cz[i] + e.z[q], g, false);
+      const TransientGreenPair pair = MakeTransientGreenPairInFluid(f.cy[i] - e.y[q], f.cz[i] + e.z[q], half_sqrt_g, false);
       if (both_positive)
         TransientGreenTimeIntegrals2(pair, lags.data(), &h[q * nl]);
       else
@@ -112,12 +115,12 @@ std::vector<Level> ComputeLevels(const FieldSet& f, const std::vector<Panel>& sr
   for (std::size_t p = 0; p < f.qy.size(); ++p) {
     int q0 = 0;
     for (; both_positive && q0 + 1 < ne; q0 += 2) {
-      const TransientGreenPair pair[2] = {MakeTransientGreenPair(f.qy[p] - e.y[q0], f.qz[p] + e.z[q0], g),
-                                          MakeTransientGreenPair(f.qy[p] - e.y[q0 + 1], f.qz[p] + e.z[q0 + 1], g)};
+      const TransientGreenPair pair[2] = {MakeTransientGreenPairInFluid(f.qy[p] - e.y[q0], f.qz[p] + e.z[q0], half_sqrt_g),
+                                          MakeTransientGreenPairInFluid(f.qy[p] - e.y[q0 + 1], f.qz[p] + e.z[q0 + 1], half_sqrt_g)};
       TransientGreenSpaceTimeIntegrals2x2(pair, lags.data(), log_lag.data(), g, &h[q0 * nl]);
     }
     for (int q = q0; q < ne; ++q) {
-      const TransientGreenPair pair = MakeTransientGreenPair(f.qy[p] - e.y[q], f.qz[p] + e.z[q], g);
+      const TransientGreenPair pair = MakeTransientGreenPairInFluid(f.qy[p] - e.y[q], f.qz[p] + e.z[q], half_sqrt_g);
       if (both_positive)
         TransientGreenSpaceTimeIntegrals2(pair, lags.data(), log_lag.data(), g, &h[q * nl]);
       else
