@@ -12,17 +12,51 @@ constexpr double kEps = 1e-16;
 // took most of the strip-theory comparator's time.
 constexpr double kEps2 = kEps * kEps;
 
-// S(z) = Σ_{k>=1} (−1)^{k+1} z^k / (k·k!), so that E1(z) = −γ − ln z + S(z) (DLMF 6.6.2).
+// Complex product by its four real products (std::complex's operator* adds a NaN check and a library call
+// for the infinite cases, which finite arguments never reach).
+inline std::complex<double> Mul(std::complex<double> a, std::complex<double> b) {
+  return {a.real() * b.real() - a.imag() * b.imag(), a.real() * b.imag() + a.imag() * b.real()};
+}
+
+// Coefficients (−1)^{k+1}/(k·k!) of S for k = 1..kSeriesTerms − 1 (k = 0 unused). The series is used only
+// for |z| < 40, where the term of k = 159 is below e^{−70} (and the sum, near the negative real axis, above
+// 1), so 160 entries are never exhausted.
+constexpr int kSeriesTerms = 160;
+struct SeriesCoefficients {
+  double c[kSeriesTerms];
+  constexpr SeriesCoefficients() : c() {
+    double factorial = 1.0;
+    for (int k = 1; k < kSeriesTerms; ++k) {
+      factorial *= k;
+      c[k] = (k % 2 ? 1.0 : -1.0) / (static_cast<double>(k) * factorial);
+    }
+  }
+};
+constexpr SeriesCoefficients kSeries{};
+
+// S(z) = Σ_{k>=1} (−1)^{k+1} z^k / (k·k!), so that E1(z) = −γ − ln z + S(z) (DLMF 6.6.2). Two terms per step
+// (z^k and z^{k+1} advanced by z², two independent product chains, no divisions), until both terms of a
+// pair are below kEps of the sum.
 std::complex<double> SeriesTail(std::complex<double> z) {
-  std::complex<double> term = z;  // (−1)^{k+1} z^k / k!
-  std::complex<double> sum = z;
-  for (int k = 2; k < 500; ++k) {
-    term *= -z / static_cast<double>(k);
-    const std::complex<double> add = term / static_cast<double>(k);
-    sum += add;
-    if (std::norm(add) <= kEps2 * std::norm(sum)) break;
+  const std::complex<double> z2 = Mul(z, z);
+  std::complex<double> pa = z, pb = z2;  // z^k, z^{k+1}
+  std::complex<double> sum = kSeries.c[1] * pa + kSeries.c[2] * pb;
+  for (int k = 3; k + 1 < kSeriesTerms; k += 2) {
+    pa = Mul(pa, z2);
+    pb = Mul(pb, z2);
+    const std::complex<double> ta = kSeries.c[k] * pa, tb = kSeries.c[k + 1] * pb;
+    sum += ta + tb;
+    if (std::norm(ta) + std::norm(tb) <= kEps2 * std::norm(sum)) break;
   }
   return sum;
+}
+
+// ln z as (ln|z|, arg z): ln|z| = ½ ln(x² + y²) (absolute error a few 1e-16, all the callers need: ln z is
+// added to O(1) terms); std::log's extra care near |z| = 1 costs more than the rest of the series.
+std::complex<double> Log(std::complex<double> z) {
+  const double n = std::norm(z);
+  if (!(n > 1e-290) || !(n < 1e290)) return std::log(z);
+  return {0.5 * std::log(n), std::atan2(z.imag(), z.real())};
 }
 
 // Where the power series is used: |z| <= 5, or close to the negative real axis (Re z < −2|Im z|) for |z| <
@@ -86,14 +120,14 @@ std::complex<double> Asymptotic(std::complex<double> z) {
 
 std::complex<double> ScaledExpIntE1(std::complex<double> z) {
   if (z == std::complex<double>(0.0, 0.0)) return {std::numeric_limits<double>::infinity(), 0.0};
-  if (UseSeries(z)) return std::exp(z) * (-kEulerGamma - std::log(z) + SeriesTail(z));
+  if (UseSeries(z)) return Mul(std::exp(z), -kEulerGamma - Log(z) + SeriesTail(z));
   if (UseAsymptotic(z)) return Asymptotic(z);
   return ContinuedFraction(z);
 }
 
 std::complex<double> ExpIntE1(std::complex<double> z) {
   if (z == std::complex<double>(0.0, 0.0)) return {std::numeric_limits<double>::infinity(), 0.0};
-  if (UseSeries(z)) return -kEulerGamma - std::log(z) + SeriesTail(z);
+  if (UseSeries(z)) return -kEulerGamma - Log(z) + SeriesTail(z);
   return std::exp(-z) * ScaledExpIntE1(z);
 }
 
@@ -113,17 +147,20 @@ std::complex<double> OneMinusExp(std::complex<double> z, std::complex<double> ez
 
 }  // namespace
 
-ScaledExpIntE1Pair ScaledExpIntE1AndPlusLog(std::complex<double> z) {
+ScaledExpIntE1Pair ScaledExpIntE1AndPlusLog(std::complex<double> z, std::complex<double> exp_z) {
   if (z == std::complex<double>(0.0, 0.0)) return {{std::numeric_limits<double>::infinity(), 0.0}, {-kEulerGamma, 0.0}};
   if (Negligible(z, 1e-300)) return {ScaledExpIntE1(z), {-kEulerGamma, 0.0}};
   if (UseSeries(z)) {
     // One exponential, one logarithm and one series for both (the two functions differ by ln z).
-    const std::complex<double> ez = std::exp(z), tail = SeriesTail(z), log_z = std::log(z);
-    return {ez * (-kEulerGamma - log_z + tail), ez * (-kEulerGamma + tail) + OneMinusExp(z, ez) * log_z};
+    const std::complex<double> tail = SeriesTail(z), log_z = Log(z);
+    const std::complex<double> g = -kEulerGamma + tail;
+    return {Mul(exp_z, g - log_z), Mul(exp_z, g) + Mul(OneMinusExp(z, exp_z), log_z)};
   }
   const std::complex<double> scaled = UseAsymptotic(z) ? Asymptotic(z) : ContinuedFraction(z);
-  return {scaled, scaled + std::log(z)};
+  return {scaled, scaled + Log(z)};
 }
+
+ScaledExpIntE1Pair ScaledExpIntE1AndPlusLog(std::complex<double> z) { return ScaledExpIntE1AndPlusLog(z, std::exp(z)); }
 
 std::complex<double> ScaledExpIntE1PlusLog(std::complex<double> z) { return ScaledExpIntE1AndPlusLog(z).plus_log; }
 

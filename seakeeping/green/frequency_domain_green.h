@@ -27,6 +27,8 @@ struct WaveGreenValue {
 
 /// The smooth part Gs (see above) for wavenumber nu [1/m] > 0, Y = y − η [m], Z = z + ζ <= 0 [m].
 WaveGreenValue SmoothWaveGreen(double nu, double Y, double Z);
+/// The same with two_log_nu = 2 ln ν given (a panel integral evaluates Gs at many points of one ν).
+WaveGreenValue SmoothWaveGreen(double nu, double two_log_nu, double Y, double Z);
 
 /// The whole Green function G at p = (y, z) for a source at (eta, zeta), both with z, ζ <= 0 and p ≠ q.
 WaveGreenValue PulsatingSourceGreen(double nu, double y, double z, double eta, double zeta);
