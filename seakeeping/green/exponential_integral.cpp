@@ -18,37 +18,51 @@ inline std::complex<double> Mul(std::complex<double> a, std::complex<double> b) 
   return {a.real() * b.real() - a.imag() * b.imag(), a.real() * b.imag() + a.imag() * b.real()};
 }
 
-// Coefficients (−1)^{k+1}/(k·k!) of S for k = 1..kSeriesTerms − 1 (k = 0 unused). The series is used only
-// for |z| < 40, where the term of k = 159 is below e^{−70} (and the sum, near the negative real axis, above
-// 1), so 160 entries are never exhausted.
+// Series coefficients for k = 1..kSeriesTerms − 1 (k = 0 unused): e1[k] = (−1)^{k+1}/(k·k!) of S below and
+// one_minus_exp[k] = −1/k! of 1 − e^z. The E1 series is used only for |z| < 40, where the term of k = 159 is
+// below e^{−70} (and the sum, near the negative real axis, above 1), so 160 entries are never exhausted; the
+// exponential's only for |z| < 1/2.
 constexpr int kSeriesTerms = 160;
 struct SeriesCoefficients {
-  double c[kSeriesTerms];
-  constexpr SeriesCoefficients() : c() {
+  double e1[kSeriesTerms];
+  double one_minus_exp[kSeriesTerms];
+  constexpr SeriesCoefficients() : e1(), one_minus_exp() {
     double factorial = 1.0;
     for (int k = 1; k < kSeriesTerms; ++k) {
       factorial *= k;
-      c[k] = (k % 2 ? 1.0 : -1.0) / (static_cast<double>(k) * factorial);
+      e1[k] = (k % 2 ? 1.0 : -1.0) / (static_cast<double>(k) * factorial);
+      one_minus_exp[k] = -1.0 / factorial;
     }
   }
 };
 constexpr SeriesCoefficients kSeries{};
 
-// S(z) = Σ_{k>=1} (−1)^{k+1} z^k / (k·k!), so that E1(z) = −γ − ln z + S(z) (DLMF 6.6.2). Two terms per step
-// (z^k and z^{k+1} advanced by z², two independent product chains, no divisions), until both terms of a
-// pair are below kEps of the sum.
-std::complex<double> SeriesTail(std::complex<double> z) {
+// Σ_{k>=1} c[k] z^k two terms per step (z^k and z^{k+1} advanced by z², two independent product chains, no
+// divisions), until both terms of a pair are below kEps of the sum.
+std::complex<double> PowerSeries(std::complex<double> z, const double (&c)[kSeriesTerms]) {
   const std::complex<double> z2 = Mul(z, z);
   std::complex<double> pa = z, pb = z2;  // z^k, z^{k+1}
-  std::complex<double> sum = kSeries.c[1] * pa + kSeries.c[2] * pb;
+  std::complex<double> sum = c[1] * pa + c[2] * pb;
   for (int k = 3; k + 1 < kSeriesTerms; k += 2) {
     pa = Mul(pa, z2);
     pb = Mul(pb, z2);
-    const std::complex<double> ta = kSeries.c[k] * pa, tb = kSeries.c[k + 1] * pb;
+    const std::complex<double> ta = c[k] * pa, tb = c[k + 1] * pb;
     sum += ta + tb;
     if (std::norm(ta) + std::norm(tb) <= kEps2 * std::norm(sum)) break;
   }
   return sum;
+}
+
+// S(z) = Σ_{k>=1} (−1)^{k+1} z^k / (k·k!), so that E1(z) = −γ − ln z + S(z) (DLMF 6.6.2).
+std::complex<double> SeriesTail(std::complex<double> z) { return PowerSeries(z, kSeries.e1); }
+
+// 1/v as conj(v)/|v|² (one real division; std::complex's division guards against overflow, which the
+// continued fraction's O(1)..O(1/tiny) values cannot reach), std::complex's division below 1e-145.
+std::complex<double> Recip(std::complex<double> v) {
+  const double n = std::norm(v);
+  if (!(n > 1e-290)) return 1.0 / v;
+  const double inv = 1.0 / n;
+  return {v.real() * inv, -v.imag() * inv};
 }
 
 // ln z as (ln|z|, arg z): ln|z| = ½ ln(x² + y²) (absolute error a few 1e-16, all the callers need: ln z is
@@ -81,18 +95,18 @@ std::complex<double> ContinuedFraction(std::complex<double> z) {
   const double tiny = 1e-300;
   std::complex<double> b = z + 1.0;
   std::complex<double> c = 1.0 / tiny;
-  std::complex<double> d = 1.0 / b;
+  std::complex<double> d = Recip(b);
   std::complex<double> h = d;
   for (int i = 1; i < 20000; ++i) {
     const double an = -static_cast<double>(i) * i;
     b += 2.0;
     d = an * d + b;
     if (Negligible(d, tiny)) d = tiny;
-    c = b + an / c;
+    c = b + an * Recip(c);
     if (Negligible(c, tiny)) c = tiny;
-    d = 1.0 / d;
-    const std::complex<double> del = c * d;
-    h *= del;
+    d = Recip(d);
+    const std::complex<double> del = Mul(c, d);
+    h = Mul(h, del);
     if (std::norm(del - 1.0) < kEps2) break;
   }
   return h;
@@ -136,13 +150,7 @@ namespace {
 // −expm1(z) = 1 − e^z, by its series for small |z| (no cancellation), given e^z.
 std::complex<double> OneMinusExp(std::complex<double> z, std::complex<double> ez) {
   if (!(std::norm(z) < 0.25)) return 1.0 - ez;
-  std::complex<double> t = z, s = z;
-  for (int k = 2; k < 40; ++k) {
-    t *= z / static_cast<double>(k);
-    s += t;
-    if (std::norm(t) <= kEps2 * std::norm(s)) break;
-  }
-  return -s;
+  return PowerSeries(z, kSeries.one_minus_exp);
 }
 
 }  // namespace

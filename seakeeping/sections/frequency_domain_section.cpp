@@ -52,7 +52,8 @@ double PointSegmentDistance(double py, double pz, double ay, double az, double b
   const double l2 = dy * dy + dz * dz;
   double t = l2 > 0 ? ((py - ay) * dy + (pz - az) * dz) / l2 : 0.0;
   t = std::clamp(t, 0.0, 1.0);
-  return std::hypot(py - (ay + t * dy), pz - (az + t * dz));
+  const double ey = py - (ay + t * dy), ez = pz - (az + t * dz);
+  return std::sqrt(ey * ey + ez * ez);  // coordinates of O(1) m: no overflow, no need of hypot
 }
 
 struct Influence {
@@ -63,7 +64,7 @@ struct Influence {
 // with its distance to the field point's image (p̄ = (y, −z), where ζc → 0) or with the wavelength.
 void IntegrateSmooth(double nu, double two_log_nu, double y, double z, double ay, double az, double by, double bz,
                      int depth, const GaussRule& rule, int max_depth, Influence* acc) {
-  const double len = std::hypot(by - ay, bz - az);
+  const double len = std::sqrt((by - ay) * (by - ay) + (bz - az) * (bz - az));
   const double dist = PointSegmentDistance(y, -z, ay, az, by, bz);
   if (depth < max_depth && (len > dist || len * nu > 1.0)) {
     const double my = 0.5 * (ay + by), mz = 0.5 * (az + bz);
