@@ -1,5 +1,6 @@
 #include "seakeeping/motions/strip_theory_stf.h"
 
+#include <algorithm>
 #include <cmath>
 #include <exception>
 #include <map>
@@ -34,6 +35,9 @@ SectionRowProvider FrequencyDomainSectionRows(const StripKernel& geometry, int p
   struct Step {
     std::once_flag once;
     std::vector<SectionHeaveSolver> solvers;
+    // Per body (one entry with interaction): its solver, and whether the body is the mirror image about
+    // y = 0 of that solver's body (its potentials then read in reverse panel order).
+    std::vector<std::pair<std::size_t, bool>> bodies;
   };
   struct Cache {
     std::mutex mutex;
@@ -65,17 +69,35 @@ SectionRowProvider FrequencyDomainSectionRows(const StripKernel& geometry, int p
         o.g_m_s2 = g->g_m_s2;
         if (interaction) {
           step.solvers.emplace_back(sections, o);
-        } else {
-          for (const auto& s : sections) step.solvers.emplace_back(std::vector<std::vector<Panel>>{s}, o);
+          step.bodies.emplace_back(0, false);
+          return;
+        }
+        // Each body alone: a body that is the mirror image about y = 0 of one already prepared (the two
+        // demihulls of a catamaran) shares its solver.
+        double size = 0.0;
+        for (const Panel& p : all) size = std::max({size, std::fabs(p.y1), std::fabs(p.z1)});
+        std::vector<std::size_t> solver_of(sections.size());
+        for (std::size_t b = 0; b < sections.size(); ++b) {
+          const std::size_t partner = sections.size() - 1 - b;
+          if (partner < b && MirrorImagePanels(sections[b], sections[partner], 0.0, 1e-12 * size)) {
+            step.bodies.emplace_back(solver_of[partner], true);
+            continue;
+          }
+          solver_of[b] = step.solvers.size();
+          step.solvers.emplace_back(std::vector<std::vector<Panel>>{sections[b]}, o);
+          step.bodies.emplace_back(solver_of[b], false);
         }
       });
       // F3 = iω_e ρ ∮ φ n_z dl (p = −iω_e ρ φ, n into the fluid); by reciprocity the heave force of a normal
       // velocity V is iω_e ρ ∮ ψ_heave V dl.
       const std::complex<double> c(0.0, omega_e * g->rho_kg_m3);
+      std::vector<Eigen::VectorXcd> psi;
+      for (const SectionHeaveSolver& solver : step.solvers) psi.push_back(solver.HeavePotential(omega_e));
       Eigen::Index i = 0;
-      for (const SectionHeaveSolver& solver : step.solvers) {
-        const Eigen::VectorXcd psi = solver.HeavePotential(omega_e);
-        for (Eigen::Index k = 0; k < psi.size(); ++k, ++i) r[i] = c * psi[k] * all[i].Length();
+      for (const auto& [solver, mirrored] : step.bodies) {
+        const Eigen::VectorXcd& p = psi[solver];
+        for (Eigen::Index k = 0; k < p.size(); ++k, ++i)
+          r[i] = c * (mirrored ? p[p.size() - 1 - k] : p[k]) * all[i].Length();
       }
     }
     std::lock_guard<std::mutex> lock(cache->mutex);

@@ -348,6 +348,18 @@ std::vector<SectionHydrodynamics> SolveSectionFrequencyDomain(const std::vector<
   return out;
 }
 
+bool MirrorImagePanels(const std::vector<Panel>& a, const std::vector<Panel>& b, double y_axis, double tol) {
+  if (a.size() != b.size()) return false;
+  for (std::size_t k = 0; k < a.size(); ++k) {
+    const Panel &p = a[k], &q = b[b.size() - 1 - k];
+    if (!(std::fabs(p.y1 - (2.0 * y_axis - q.y2)) <= tol && std::fabs(p.y2 - (2.0 * y_axis - q.y1)) <= tol &&
+          std::fabs(p.z1 - q.z2) <= tol && std::fabs(p.z2 - q.z1) <= tol &&
+          std::fabs(p.turn_rad - q.turn_rad) <= 1e-12 * (1.0 + std::fabs(p.turn_rad))))
+      return false;
+  }
+  return true;
+}
+
 struct SectionHeaveSolver::Data {
   FrequencyDomainOptions options;
   GaussRule rule;
@@ -362,7 +374,7 @@ namespace {
 
 // Mirror partners of a strip symmetric about y = y_c: body panel j ↔ nb − 1 − j and lid panel k ↔ nl − 1 − k
 // (port waterline → keel → starboard waterline order, sections from one side to the other), each the
-// reversed mirror image of the other within tol. Empty if any pair fails.
+// reversed mirror image of the other to 1e-12 of the strip's size. Empty if any pair fails.
 std::vector<int> MirrorPartners(const StripPanels& sp) {
   double ymin = sp.body.front().y1, ymax = ymin, zmin = 0.0;
   for (const Panel& p : sp.body) {
@@ -370,17 +382,10 @@ std::vector<int> MirrorPartners(const StripPanels& sp) {
     ymax = std::max({ymax, p.y1, p.y2});
     zmin = std::min({zmin, p.z1, p.z2});
   }
-  const double yc = 0.5 * (ymin + ymax);
-  const double tol = 1e-12 * std::max(ymax - ymin, -zmin);
+  const double yc = 0.5 * (ymin + ymax), tol = 1e-12 * std::max(ymax - ymin, -zmin);
+  if (!MirrorImagePanels(sp.body, sp.body, yc, tol) || !MirrorImagePanels(sp.lid, sp.lid, yc, tol)) return {};
   std::vector<int> m(sp.n);
-  for (int j = 0; j < sp.n; ++j) {
-    m[j] = j < sp.nb ? sp.nb - 1 - j : sp.nb + (sp.nl - 1 - (j - sp.nb));
-    const Panel &p = sp.Source(j), &q = sp.Source(m[j]);
-    const bool same = std::fabs(p.y1 - (2.0 * yc - q.y2)) <= tol && std::fabs(p.y2 - (2.0 * yc - q.y1)) <= tol &&
-                      std::fabs(p.z1 - q.z2) <= tol && std::fabs(p.z2 - q.z1) <= tol &&
-                      std::fabs(p.turn_rad - q.turn_rad) <= 1e-12 * (1.0 + std::fabs(p.turn_rad));
-    if (!same) return {};
-  }
+  for (int j = 0; j < sp.n; ++j) m[j] = j < sp.nb ? sp.nb - 1 - j : sp.nb + (sp.nl - 1 - (j - sp.nb));
   return m;
 }
 

@@ -83,6 +83,11 @@ std::vector<SectionHydrodynamics> SolveSectionFrequencyDomain(const std::vector<
                                                               const std::vector<double>& omegas_rad_s,
                                                               const FrequencyDomainOptions& options);
 
+/// Whether panels b are the mirror images of panels a about the line y = y_axis_m in reverse order (b[k] is
+/// a[size − 1 − k] mirrored, its end points swapped: the two halves of a PanelSymmetricSection, or two
+/// bodies placed symmetrically), to tol_m [m] in every coordinate and 1e-12 in the turning.
+bool MirrorImagePanels(const std::vector<Panel>& a, const std::vector<Panel>& b, double y_axis_m, double tol_m);
+
 /// The heave radiation potential of one strip at many frequencies (conventional strip theory needs only
 /// that): the panels, the lid and the frequency-independent Rankine parts of the influence matrices (the
 /// closed-form ln r + ln r' integrals) are prepared once, so each frequency costs only the wave part and the
