@@ -26,6 +26,16 @@ WaveGreenValue SmoothWaveGreen(double nu, double two_log_nu, double Y, double Z)
 
 WaveGreenValue SmoothWaveGreen(double nu, double Y, double Z) { return SmoothWaveGreen(nu, 2.0 * std::log(nu), Y, Z); }
 
+void AddWeightedSmoothWaveGreen(double nu, double two_log_nu, double y, double z, int count, const double* eta,
+                                const double* zeta, const double* weight, WaveGreenValue* sum) {
+  for (int k = 0; k < count; ++k) {
+    const WaveGreenValue s = SmoothWaveGreen(nu, two_log_nu, y - eta[k], z + zeta[k]);
+    sum->value += weight[k] * s.value;
+    sum->dy += weight[k] * s.dy;
+    sum->dz += weight[k] * s.dz;
+  }
+}
+
 WaveGreenValue PulsatingSourceGreen(double nu, double y, double z, double eta, double zeta) {
   WaveGreenValue out = SmoothWaveGreen(nu, y - eta, z + zeta);
   const double Y = y - eta, Zm = z - zeta, Zp = z + zeta;

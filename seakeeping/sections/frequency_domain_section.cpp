@@ -72,14 +72,17 @@ void IntegrateSmooth(double nu, double two_log_nu, double y, double z, double ay
     IntegrateSmooth(nu, two_log_nu, y, z, my, mz, by, bz, depth + 1, rule, max_depth, acc);
     return;
   }
-  for (std::size_t k = 0; k < rule.t.size(); ++k) {
-    const double qy = ay + rule.t[k] * (by - ay), qz = az + rule.t[k] * (bz - az);
-    const WaveGreenValue s = SmoothWaveGreen(nu, two_log_nu, y - qy, z + qz);
-    const double wl = rule.w[k] * len;
-    acc->phi += wl * s.value;
-    acc->vy += wl * s.dy;
-    acc->vz += wl * s.dz;
+  constexpr int kMaxPoints = 20;  // FrequencyDomainOptions::gauss_points <= 20
+  double qy[kMaxPoints], qz[kMaxPoints], wl[kMaxPoints];
+  const int count = static_cast<int>(rule.t.size());
+  for (int k = 0; k < count; ++k) {
+    qy[k] = ay + rule.t[k] * (by - ay);
+    qz[k] = az + rule.t[k] * (bz - az);
+    wl[k] = rule.w[k] * len;
   }
+  WaveGreenValue sum{acc->phi, acc->vy, acc->vz};
+  AddWeightedSmoothWaveGreen(nu, two_log_nu, y, z, count, qy, qz, wl, &sum);
+  *acc = {sum.value, sum.dy, sum.dz};
 }
 
 // The frequency-independent part of a panel's influence at a field point: the closed-form ln r + ln r'
