@@ -59,11 +59,12 @@ std::complex<double> SeriesTail(std::complex<double> z) {
   return {sr, si};
 }
 
-// 1/v as conj(v)/|v|² (one real division; std::complex's division guards against overflow, which the
-// continued fraction's O(1)..O(1/tiny) values cannot reach), std::complex's division below 1e-145.
+// 1/v as conj(v)/|v|² (one real division instead of std::complex's scaled division), which needs |v|² in
+// range: std::complex's division where it is not (the continued fraction's start value 1/tiny, its tiny
+// guards).
 std::complex<double> Recip(std::complex<double> v) {
   const double n = std::norm(v);
-  if (!(n > 1e-290)) return 1.0 / v;
+  if (!(n > 1e-290 && n < 1e290)) return 1.0 / v;
   const double inv = 1.0 / n;
   return {v.real() * inv, -v.imag() * inv};
 }
