@@ -28,5 +28,7 @@ struct ScaledExpIntE1Pair {
   std::complex<double> plus_log;  ///< e^z E1(z) + ln z
 };
 ScaledExpIntE1Pair ScaledExpIntE1AndPlusLog(std::complex<double> z);
+/// The same with e^z supplied by the caller (exp_z = std::exp(z)), who needs it anyway.
+ScaledExpIntE1Pair ScaledExpIntE1AndPlusLog(std::complex<double> z, std::complex<double> exp_z);
 
 }  // namespace hullopt::sk

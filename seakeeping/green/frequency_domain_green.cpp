@@ -6,20 +6,34 @@
 
 namespace hullopt::sk {
 
-WaveGreenValue SmoothWaveGreen(double nu, double Y, double Z) {
+WaveGreenValue SmoothWaveGreen(double nu, double two_log_nu, double Y, double Z) {
   using C = std::complex<double>;
   const double ay = std::fabs(Y);  // +0.0 for Y = 0: E1 taken on the upper side of its cut
   const C w(nu * Z, nu * ay);      // ν ζc
-  const C rad = C(0.0, 2.0 * M_PI) * std::exp(C(nu * Z, -nu * ay));  // 2πi e^{ν conj ζc}
+  // e^w once: the radiating term 2πi e^{ν conj ζc} is 2πi conj(e^w).
+  const C ew = std::exp(w);
+  const C rad(2.0 * M_PI * ew.imag(), 2.0 * M_PI * ew.real());  // 2πi conj(e^w)
   WaveGreenValue out;
-  const ScaledExpIntE1Pair e1 = ScaledExpIntE1AndPlusLog(w);
-  out.value = 2.0 * std::log(nu) - 2.0 * e1.plus_log.real() + rad;
+  const ScaledExpIntE1Pair e1 = ScaledExpIntE1AndPlusLog(w, ew);
+  out.value = two_log_nu - 2.0 * e1.plus_log.real() + rad;
   // d g(νζc)/dζc = ν e^w E1(w): only log-singular at ζc = 0 (the ln ζc of g cancels the −1/ζc of e^w E1).
   const C f = nu * e1.scaled;
   out.dz = -2.0 * f.real() + nu * rad;
-  const C d_abs_y = 2.0 * f.imag() - C(0.0, nu) * rad;  // ∂/∂|Y|: Re(i f) = −Im f
+  const C d_abs_y = 2.0 * f.imag() - C(-nu * rad.imag(), nu * rad.real());  // ∂/∂|Y|: Re(i f) = −Im f
   out.dy = (Y >= 0 ? 1.0 : -1.0) * d_abs_y;
   return out;
+}
+
+WaveGreenValue SmoothWaveGreen(double nu, double Y, double Z) { return SmoothWaveGreen(nu, 2.0 * std::log(nu), Y, Z); }
+
+void AddWeightedSmoothWaveGreen(double nu, double two_log_nu, double y, double z, int count, const double* eta,
+                                const double* zeta, const double* weight, WaveGreenValue* sum) {
+  for (int k = 0; k < count; ++k) {
+    const WaveGreenValue s = SmoothWaveGreen(nu, two_log_nu, y - eta[k], z + zeta[k]);
+    sum->value += weight[k] * s.value;
+    sum->dy += weight[k] * s.dy;
+    sum->dz += weight[k] * s.dz;
+  }
 }
 
 WaveGreenValue PulsatingSourceGreen(double nu, double y, double z, double eta, double zeta) {

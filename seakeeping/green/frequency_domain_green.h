@@ -27,6 +27,13 @@ struct WaveGreenValue {
 
 /// The smooth part Gs (see above) for wavenumber nu [1/m] > 0, Y = y − η [m], Z = z + ζ <= 0 [m].
 WaveGreenValue SmoothWaveGreen(double nu, double Y, double Z);
+/// The same with two_log_nu = 2 ln ν given (a panel integral evaluates Gs at many points of one ν).
+WaveGreenValue SmoothWaveGreen(double nu, double two_log_nu, double Y, double Z);
+
+/// sum += Σ_k weight[k] · Gs at the field point (y, z) for sources at (eta[k], zeta[k]), k < count: the
+/// quadrature of a panel segment in one call.
+void AddWeightedSmoothWaveGreen(double nu, double two_log_nu, double y, double z, int count, const double* eta,
+                                const double* zeta, const double* weight, WaveGreenValue* sum);
 
 /// The whole Green function G at p = (y, z) for a source at (eta, zeta), both with z, ζ <= 0 and p ≠ q.
 WaveGreenValue PulsatingSourceGreen(double nu, double y, double z, double eta, double zeta);

@@ -1,5 +1,6 @@
 #include "seakeeping/motions/strip_theory_stf.h"
 
+#include <algorithm>
 #include <cmath>
 #include <exception>
 #include <map>
@@ -29,11 +30,22 @@ SectionRowProvider FrequencyDomainSectionRows(const StripKernel& geometry, int p
                                               bool interaction) {
   if (panels_per_body < 1)
     throw std::invalid_argument("FrequencyDomainSectionRows: panels_per_body must be >= 1");
+  // Per step: the section solvers (one strip with every body, or one per body), prepared once on first use
+  // (panels, lid, Rankine parts) and shared by all frequencies; and the rows already computed.
+  struct Step {
+    std::once_flag once;
+    std::vector<SectionHeaveSolver> solvers;
+    // Per body (one entry with interaction): its solver, and whether the body is the mirror image about
+    // y = 0 of that solver's body (its potentials then read in reverse panel order).
+    std::vector<std::pair<std::size_t, bool>> bodies;
+  };
   struct Cache {
     std::mutex mutex;
     std::map<std::pair<int, double>, Eigen::RowVectorXcd> rows;
+    std::vector<std::unique_ptr<Step>> steps;
   };
   auto cache = std::make_shared<Cache>();
+  for (std::size_t n = 0; n < geometry.panels.size(); ++n) cache->steps.push_back(std::make_unique<Step>());
   const StripKernel* g = &geometry;
   return [cache, g, panels_per_body, interaction](int n, double omega_e) -> Eigen::RowVectorXcd {
     {
@@ -41,32 +53,51 @@ SectionRowProvider FrequencyDomainSectionRows(const StripKernel& geometry, int p
       const auto it = cache->rows.find({n, omega_e});
       if (it != cache->rows.end()) return it->second;
     }
-    const auto& all = g->panels[n];
+    const auto& all = g->panels.at(n);
     Eigen::RowVectorXcd r = Eigen::RowVectorXcd::Zero(static_cast<Eigen::Index>(all.size()));
     if (!all.empty()) {
       if (all.size() % panels_per_body != 0)
         throw std::invalid_argument(
             "FrequencyDomainSectionRows: panel count is not a multiple of panels_per_body");
-      std::vector<std::vector<Panel>> sections;
-      for (std::size_t i = 0; i < all.size(); i += panels_per_body)
-        sections.emplace_back(all.begin() + i, all.begin() + i + panels_per_body);
-      FrequencyDomainOptions o;
-      o.rho_kg_m3 = g->rho_kg_m3;
-      o.g_m_s2 = g->g_m_s2;
+      Step& step = *cache->steps[n];
+      std::call_once(step.once, [&] {
+        std::vector<std::vector<Panel>> sections;
+        for (std::size_t i = 0; i < all.size(); i += panels_per_body)
+          sections.emplace_back(all.begin() + i, all.begin() + i + panels_per_body);
+        FrequencyDomainOptions o;
+        o.rho_kg_m3 = g->rho_kg_m3;
+        o.g_m_s2 = g->g_m_s2;
+        if (interaction) {
+          step.solvers.emplace_back(sections, o);
+          step.bodies.emplace_back(0, false);
+          return;
+        }
+        // Each body alone: a body that is the mirror image about y = 0 of one already prepared (the two
+        // demihulls of a catamaran) shares its solver.
+        double size = 0.0;
+        for (const Panel& p : all) size = std::max({size, std::fabs(p.y1), std::fabs(p.z1)});
+        std::vector<std::size_t> solver_of(sections.size());
+        for (std::size_t b = 0; b < sections.size(); ++b) {
+          const std::size_t partner = sections.size() - 1 - b;
+          if (partner < b && MirrorImagePanels(sections[b], sections[partner], 0.0, 1e-12 * size)) {
+            step.bodies.emplace_back(solver_of[partner], true);
+            continue;
+          }
+          solver_of[b] = step.solvers.size();
+          step.solvers.emplace_back(std::vector<std::vector<Panel>>{sections[b]}, o);
+          step.bodies.emplace_back(solver_of[b], false);
+        }
+      });
       // F3 = iω_e ρ ∮ φ n_z dl (p = −iω_e ρ φ, n into the fluid); by reciprocity the heave force of a normal
       // velocity V is iω_e ρ ∮ ψ_heave V dl.
       const std::complex<double> c(0.0, omega_e * g->rho_kg_m3);
-      if (interaction) {
-        const SectionHydrodynamics h = SolveSectionFrequencyDomain(sections, omega_e, o);
-        for (Eigen::Index i = 0; i < r.size(); ++i) r[i] = c * h.radiation_potential(i, 1) * all[i].Length();
-      } else {
-        for (std::size_t b = 0; b < sections.size(); ++b) {
-          const SectionHydrodynamics h = SolveSectionFrequencyDomain({sections[b]}, omega_e, o);
-          for (int j = 0; j < panels_per_body; ++j) {
-            const auto i = static_cast<Eigen::Index>(b * panels_per_body + j);
-            r[i] = c * h.radiation_potential(j, 1) * all[i].Length();
-          }
-        }
+      std::vector<Eigen::VectorXcd> psi;
+      for (const SectionHeaveSolver& solver : step.solvers) psi.push_back(solver.HeavePotential(omega_e));
+      Eigen::Index i = 0;
+      for (const auto& [solver, mirrored] : step.bodies) {
+        const Eigen::VectorXcd& p = psi[solver];
+        for (Eigen::Index k = 0; k < p.size(); ++k, ++i)
+          r[i] = c * (mirrored ? p[p.size() - 1 - k] : p[k]) * all[i].Length();
       }
     }
     std::lock_guard<std::mutex> lock(cache->mutex);

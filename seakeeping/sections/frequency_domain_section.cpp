@@ -52,7 +52,8 @@ double PointSegmentDistance(double py, double pz, double ay, double az, double b
   const double l2 = dy * dy + dz * dz;
   double t = l2 > 0 ? ((py - ay) * dy + (pz - az) * dz) / l2 : 0.0;
   t = std::clamp(t, 0.0, 1.0);
-  return std::hypot(py - (ay + t * dy), pz - (az + t * dz));
+  const double ey = py - (ay + t * dy), ez = pz - (az + t * dz);
+  return std::sqrt(ey * ey + ez * ez);  // coordinates of O(1) m: no overflow, no need of hypot
 }
 
 struct Influence {
@@ -61,35 +62,48 @@ struct Influence {
 
 // ∫ Gs ds and its field-point gradient over the segment a → b, refined where the segment is long compared
 // with its distance to the field point's image (p̄ = (y, −z), where ζc → 0) or with the wavelength.
-void IntegrateSmooth(double nu, double y, double z, double ay, double az, double by, double bz, int depth,
-                     const GaussRule& rule, int max_depth, Influence* acc) {
-  const double len = std::hypot(by - ay, bz - az);
+void IntegrateSmooth(double nu, double two_log_nu, double y, double z, double ay, double az, double by, double bz,
+                     int depth, const GaussRule& rule, int max_depth, Influence* acc) {
+  const double len = std::sqrt((by - ay) * (by - ay) + (bz - az) * (bz - az));
   const double dist = PointSegmentDistance(y, -z, ay, az, by, bz);
   if (depth < max_depth && (len > dist || len * nu > 1.0)) {
     const double my = 0.5 * (ay + by), mz = 0.5 * (az + bz);
-    IntegrateSmooth(nu, y, z, ay, az, my, mz, depth + 1, rule, max_depth, acc);
-    IntegrateSmooth(nu, y, z, my, mz, by, bz, depth + 1, rule, max_depth, acc);
+    IntegrateSmooth(nu, two_log_nu, y, z, ay, az, my, mz, depth + 1, rule, max_depth, acc);
+    IntegrateSmooth(nu, two_log_nu, y, z, my, mz, by, bz, depth + 1, rule, max_depth, acc);
     return;
   }
-  for (std::size_t k = 0; k < rule.t.size(); ++k) {
-    const double qy = ay + rule.t[k] * (by - ay), qz = az + rule.t[k] * (bz - az);
-    const WaveGreenValue s = SmoothWaveGreen(nu, y - qy, z + qz);
-    const double wl = rule.w[k] * len;
-    acc->phi += wl * s.value;
-    acc->vy += wl * s.dy;
-    acc->vz += wl * s.dz;
+  constexpr int kMaxPoints = 20;  // FrequencyDomainOptions::gauss_points <= 20
+  double qy[kMaxPoints], qz[kMaxPoints], wl[kMaxPoints];
+  const int count = static_cast<int>(rule.t.size());
+  for (int k = 0; k < count; ++k) {
+    qy[k] = ay + rule.t[k] * (by - ay);
+    qz[k] = az + rule.t[k] * (bz - az);
+    wl[k] = rule.w[k] * len;
   }
+  WaveGreenValue sum{acc->phi, acc->vy, acc->vz};
+  AddWeightedSmoothWaveGreen(nu, two_log_nu, y, z, count, qy, qz, wl, &sum);
+  *acc = {sum.value, sum.dy, sum.dz};
+}
+
+// The frequency-independent part of a panel's influence at a field point: the closed-form ln r + ln r'
+// integrals (1/2π)∫ (ln r + ln r') ds and their gradient, summed.
+struct RankineSum {
+  double phi, vy, vz;
+};
+RankineSum RankinePart(const Panel& p, double y, double z) {
+  const SourceInfluence r = RankinePanelInfluence(p, y, z);
+  const SourceInfluence im = ImagePanelInfluence(p, y, z);
+  return {r.phi + im.phi, r.vy + im.vy, r.vz + im.vz};
 }
 
 // Potential and velocity at (y, z) of a unit-density source panel with the free-surface Green function,
-// (1/2π)∫ G ds. The self term of a body panel at its own midpoint is taken on the fluid side (+1/2).
-Influence PanelInfluence(const Panel& p, double nu, double y, double z, const GaussRule& rule,
-                         int max_depth) {
-  const SourceInfluence r = RankinePanelInfluence(p, y, z);
-  const SourceInfluence im = ImagePanelInfluence(p, y, z);
+// (1/2π)∫ G ds, given its Rankine part. The self term of a body panel at its own midpoint is taken on the
+// fluid side (+1/2).
+Influence PanelInfluence(const Panel& p, const RankineSum& r, double nu, double two_log_nu, double y, double z,
+                         const GaussRule& rule, int max_depth) {
   Influence s{};
-  IntegrateSmooth(nu, y, z, p.y1, p.z1, p.y2, p.z2, 0, rule, max_depth, &s);
-  return {r.phi + im.phi + kInv2Pi * s.phi, r.vy + im.vy + kInv2Pi * s.vy, r.vz + im.vz + kInv2Pi * s.vz};
+  IntegrateSmooth(nu, two_log_nu, y, z, p.y1, p.z1, p.y2, p.z2, 0, rule, max_depth, &s);
+  return {r.phi + kInv2Pi * s.phi, r.vy + kInv2Pi * s.vy, r.vz + kInv2Pi * s.vz};
 }
 
 // Generalised normal of mode j at (y, z) for normal (ny, nz): sway, heave, roll about +x through the origin.
@@ -113,6 +127,101 @@ void CheckSections(const std::vector<std::vector<Panel>>& sections) {
     if (!(s.front().y1 > s.back().y2))
       throw std::invalid_argument("frequency-domain solver: section " + std::to_string(k) +
                                   " must run from the port waterline (larger y) to the starboard waterline");
+  }
+}
+
+
+// Body panels, then lid panels (z = 0 from the starboard to the port waterline of each section), cosine-spaced
+// so that the lid panels at the waterline corners are as short as the body panels there; each lid panel's
+// taper weight q (see AssembleRows). Sources and field points are numbered body first, then lid.
+struct StripPanels {
+  std::vector<Panel> body, lid;
+  std::vector<double> taper;
+  int nb = 0, nl = 0, n = 0;
+  const Panel& Source(int j) const { return j < nb ? body[j] : lid[j - nb]; }
+};
+
+StripPanels MakeStripPanels(const std::vector<std::vector<Panel>>& sections, const FrequencyDomainOptions& opt) {
+  StripPanels sp;
+  for (const auto& s : sections) sp.body.insert(sp.body.end(), s.begin(), s.end());
+  for (const auto& s : sections) {
+    const int n_lid = opt.lid_panels < 0 ? std::max(4, static_cast<int>(s.size()) / 2) : opt.lid_panels;
+    const double ys = s.back().y2, yp = s.front().y1, half = 0.5 * (yp - ys);
+    auto node = [&](int i) { return ys + half * (1.0 - std::cos(M_PI * i / n_lid)); };
+    for (int i = 0; i < n_lid; ++i) {
+      sp.lid.push_back({node(i), 0.0, node(i + 1), 0.0});
+      const double d = std::min(sp.lid.back().MidY() - ys, yp - sp.lid.back().MidY());
+      sp.taper.push_back(std::min(1.0, d / (kLidTaperFraction * half)));
+    }
+  }
+  sp.nb = static_cast<int>(sp.body.size());
+  sp.nl = static_cast<int>(sp.lid.size());
+  sp.n = sp.nb + sp.nl;
+  return sp;
+}
+
+// Collocation point of field index i: a body panel midpoint, or a lid midpoint on z = 0.
+void FieldPoint(const StripPanels& sp, int i, double* y, double* z) {
+  const Panel& fp = sp.Source(i);
+  *y = fp.MidY();
+  *z = i < sp.nb ? fp.MidZ() : 0.0;
+}
+
+// The Rankine parts (frequency-independent) of every source panel at each field point of `fields`, row by
+// row (fields.size() × n).
+std::vector<RankineSum> RankineRows(const StripPanels& sp, const std::vector<int>& fields) {
+  std::vector<RankineSum> out;
+  out.reserve(fields.size() * sp.n);
+  for (int i : fields) {
+    double y, z;
+    FieldPoint(sp, i, &y, &z);
+    for (int j = 0; j < sp.n; ++j) out.push_back(RankinePart(sp.Source(j), y, z));
+  }
+  return out;
+}
+
+// Influence matrices: normal velocity at body midpoints, potential at body midpoints, and the lid condition
+// at lid midpoints. On z = 0 every source panel's potential satisfies φ_z = νφ (the Green function's
+// free-surface condition) except for the lid sheet's own jump: just below the lid (inside the body)
+// ∂φ/∂z = νφ − σ. The lid rows impose ∂φ/∂z + (2q − 1)νφ = 0 there, i.e. 2qνφ − σ = 0, q the taper weight:
+// in the middle of the lid (q = 1) the free-surface condition with the opposite sign. Without a lid the
+// interior problem (φ = 0 on the body, φ_z − νφ = 0 on the lid) has the irregular frequencies as
+// eigenvalues; with q = 1 everywhere it has none (∫|∇φ|² = −ν∫_lid |φ|² forces φ ≡ 0, so all sources
+// vanish). But then the interior potential cannot meet the body potential at the waterline corners
+// smoothly: its slope along the body (from the exterior, ∂φ/∂z = νφ) and the lid's ∂φ/∂z = −νφ differ by
+// 2νφ, which makes the interior gradient, and so the body source density, log-singular at the corners, and
+// the lid densities end there at 2νφ against the body sheet. Constant panels then converge at first order,
+// worst at high frequency (semicircle b33 at ω²R/g = 3: +16%, +10% at 14, 28 panels against the lid-off
+// +6%, +1.7%). With q → 0 linearly towards each waterline (over kLidTaperFraction of the half beam) the lid
+// density vanishes at the corners, the condition there is the exterior one and the corner is regular; the
+// interior problem keeps ∫|∇φ|² = ν∫(1 − 2q)|φ|² with a positive part only next to the corners, where
+// φ → 0 on the body, which pushes its eigenvalues far above the range of the tests (none up to ω²R/g = 7
+// for the semicircle and the B/T = 2 rectangle). A Dirichlet lid (φ = 0) conflicts with the body potential
+// at the corners (φ jumps from φ(waterline) to 0): the densities grow like 1/r there (docs/theory.md).
+//
+// AssembleRows fills row r of A (and, for a body field point, of Phi_body, whose rows are the body fields in
+// order; body fields come first in `fields`) for the field index fields[r], all n sources as columns.
+void AssembleRows(const StripPanels& sp, const std::vector<int>& fields, const std::vector<RankineSum>& rankine,
+                  double nu, const GaussRule& rule, int max_depth, Eigen::MatrixXcd* A, Eigen::MatrixXcd* Phi_body) {
+  const double two_log_nu = 2.0 * std::log(nu);
+  const int n = sp.n;
+  for (std::size_t r = 0; r < fields.size(); ++r) {
+    const int i = fields[r];
+    const bool on_body = i < sp.nb;
+    double y, z;
+    FieldPoint(sp, i, &y, &z);
+    const auto nrm = sp.Source(i).Normal();
+    const auto row = static_cast<Eigen::Index>(r);
+    for (int j = 0; j < n; ++j) {
+      const Influence inf =
+          PanelInfluence(sp.Source(j), rankine[r * n + j], nu, two_log_nu, y, z, rule, max_depth);
+      if (on_body) {
+        (*A)(row, j) = inf.vy * nrm[0] + inf.vz * nrm[1];
+        (*Phi_body)(row, j) = inf.phi;
+      } else {
+        (*A)(row, j) = 2.0 * nu * sp.taper[i - sp.nb] * inf.phi - (j == i ? 1.0 : 0.0);
+      }
+    }
   }
 }
 
@@ -147,60 +256,15 @@ SectionHydrodynamics SolveSectionFrequencyDomain(const std::vector<std::vector<P
   const double nu = omega * omega / g;
   const GaussRule rule = MakeGaussRule(opt.gauss_points);
 
-  // Body panels, then lid panels (z = 0 from the starboard to the port waterline of each section), cosine-spaced
-  // so that the lid panels at the waterline corners are as short as the body panels there; each lid panel's
-  // taper weight q (see the lid rows below).
-  std::vector<Panel> body, lid;
-  std::vector<double> taper;
-  for (const auto& s : sections) body.insert(body.end(), s.begin(), s.end());
-  for (const auto& s : sections) {
-    const int n_lid = opt.lid_panels < 0 ? std::max(4, static_cast<int>(s.size()) / 2) : opt.lid_panels;
-    const double ys = s.back().y2, yp = s.front().y1, half = 0.5 * (yp - ys);
-    auto node = [&](int i) { return ys + half * (1.0 - std::cos(M_PI * i / n_lid)); };
-    for (int i = 0; i < n_lid; ++i) {
-      lid.push_back({node(i), 0.0, node(i + 1), 0.0});
-      const double d = std::min(lid.back().MidY() - ys, yp - lid.back().MidY());
-      taper.push_back(std::min(1.0, d / (kLidTaperFraction * half)));
-    }
-  }
-  const int nb = static_cast<int>(body.size()), nl = static_cast<int>(lid.size()), n = nb + nl;
-  auto source = [&](int j) -> const Panel& { return j < nb ? body[j] : lid[j - nb]; };
-
-  // Influence matrices: normal velocity at body midpoints, potential at body midpoints, and the lid condition
-  // at lid midpoints. On z = 0 every source panel's potential satisfies φ_z = νφ (the Green function's
-  // free-surface condition) except for the lid sheet's own jump: just below the lid (inside the body)
-  // ∂φ/∂z = νφ − σ. The lid rows impose ∂φ/∂z + (2q − 1)νφ = 0 there, i.e. 2qνφ − σ = 0, q the taper weight:
-  // in the middle of the lid (q = 1) the free-surface condition with the opposite sign. Without a lid the
-  // interior problem (φ = 0 on the body, φ_z − νφ = 0 on the lid) has the irregular frequencies as
-  // eigenvalues; with q = 1 everywhere it has none (∫|∇φ|² = −ν∫_lid |φ|² forces φ ≡ 0, so all sources
-  // vanish). But then the interior potential cannot meet the body potential at the waterline corners
-  // smoothly: its slope along the body (from the exterior, ∂φ/∂z = νφ) and the lid's ∂φ/∂z = −νφ differ by
-  // 2νφ, which makes the interior gradient, and so the body source density, log-singular at the corners, and
-  // the lid densities end there at 2νφ against the body sheet. Constant panels then converge at first order,
-  // worst at high frequency (semicircle b33 at ω²R/g = 3: +16%, +10% at 14, 28 panels against the lid-off
-  // +6%, +1.7%). With q → 0 linearly towards each waterline (over kLidTaperFraction of the half beam) the lid
-  // density vanishes at the corners, the condition there is the exterior one and the corner is regular; the
-  // interior problem keeps ∫|∇φ|² = ν∫(1 − 2q)|φ|² with a positive part only next to the corners, where
-  // φ → 0 on the body, which pushes its eigenvalues far above the range of the tests (none up to ω²R/g = 7
-  // for the semicircle and the B/T = 2 rectangle). A Dirichlet lid (φ = 0) conflicts with the body potential
-  // at the corners (φ jumps from φ(waterline) to 0): the densities grow like 1/r there (docs/theory.md).
+  const StripPanels sp = MakeStripPanels(sections, opt);
+  const std::vector<Panel>& body = sp.body;
+  const int nb = sp.nb, n = sp.n;
+  auto source = [&](int j) -> const Panel& { return sp.Source(j); };
+  std::vector<int> fields(n);
+  for (int i = 0; i < n; ++i) fields[i] = i;
   Eigen::MatrixXcd A(n, n);          // system: body rows ∂φ/∂n, lid rows ∂φ/∂z + νφ from below
   Eigen::MatrixXcd Phi_body(nb, n);  // potential at body midpoints
-  for (int i = 0; i < n; ++i) {
-    const bool on_body = i < nb;
-    const Panel& fp = on_body ? body[i] : lid[i - nb];
-    const double y = fp.MidY(), z = on_body ? fp.MidZ() : 0.0;
-    const auto nrm = fp.Normal();
-    for (int j = 0; j < n; ++j) {
-      const Influence inf = PanelInfluence(source(j), nu, y, z, rule, opt.max_subdivision);
-      if (on_body) {
-        A(i, j) = inf.vy * nrm[0] + inf.vz * nrm[1];
-        Phi_body(i, j) = inf.phi;
-      } else {
-        A(i, j) = 2.0 * nu * taper[i - nb] * inf.phi - (j == i ? 1.0 : 0.0);
-      }
-    }
-  }
+  AssembleRows(sp, fields, RankineRows(sp, fields), nu, rule, opt.max_subdivision, &A, &Phi_body);
 
   // Right-hand sides: three radiation modes (unit velocity) and the beam-sea diffraction problem.
   const C ig_over_omega(0.0, g / omega);  // φ_I = (ig/ω) e^{νz − iνy} per unit wave amplitude
@@ -284,6 +348,106 @@ std::vector<SectionHydrodynamics> SolveSectionFrequencyDomain(const std::vector<
     }
   }
   if (failure) std::rethrow_exception(failure);
+  return out;
+}
+
+bool MirrorImagePanels(const std::vector<Panel>& a, const std::vector<Panel>& b, double y_axis, double tol) {
+  if (a.size() != b.size()) return false;
+  for (std::size_t k = 0; k < a.size(); ++k) {
+    const Panel &p = a[k], &q = b[b.size() - 1 - k];
+    if (!(std::fabs(p.y1 - (2.0 * y_axis - q.y2)) <= tol && std::fabs(p.y2 - (2.0 * y_axis - q.y1)) <= tol &&
+          std::fabs(p.z1 - q.z2) <= tol && std::fabs(p.z2 - q.z1) <= tol &&
+          std::fabs(p.turn_rad - q.turn_rad) <= 1e-12 * (1.0 + std::fabs(p.turn_rad))))
+      return false;
+  }
+  return true;
+}
+
+struct SectionHeaveSolver::Data {
+  FrequencyDomainOptions options;
+  GaussRule rule;
+  StripPanels sp;
+  std::vector<int> mirror;   // mirror partner of each source/field index; empty: not symmetric
+  std::vector<int> fields;   // field points (and, when symmetric, the unknowns) solved for: body first
+  int body_fields = 0;       // how many of `fields` are body panels
+  std::vector<RankineSum> rankine;
+};
+
+namespace {
+
+// Mirror partners of a strip symmetric about y = y_c: body panel j ↔ nb − 1 − j and lid panel k ↔ nl − 1 − k
+// (port waterline → keel → starboard waterline order, sections from one side to the other), each the
+// reversed mirror image of the other to 1e-12 of the strip's size. Empty if any pair fails.
+std::vector<int> MirrorPartners(const StripPanels& sp) {
+  double ymin = sp.body.front().y1, ymax = ymin, zmin = 0.0;
+  for (const Panel& p : sp.body) {
+    ymin = std::min({ymin, p.y1, p.y2});
+    ymax = std::max({ymax, p.y1, p.y2});
+    zmin = std::min({zmin, p.z1, p.z2});
+  }
+  const double yc = 0.5 * (ymin + ymax), tol = 1e-12 * std::max(ymax - ymin, -zmin);
+  if (!MirrorImagePanels(sp.body, sp.body, yc, tol) || !MirrorImagePanels(sp.lid, sp.lid, yc, tol)) return {};
+  std::vector<int> m(sp.n);
+  for (int j = 0; j < sp.n; ++j) m[j] = j < sp.nb ? sp.nb - 1 - j : sp.nb + (sp.nl - 1 - (j - sp.nb));
+  return m;
+}
+
+}  // namespace
+
+SectionHeaveSolver::SectionHeaveSolver(const std::vector<std::vector<Panel>>& sections,
+                                       const FrequencyDomainOptions& opt) {
+  std::string err;
+  if (!opt.IsValid(&err)) throw std::invalid_argument("frequency-domain options: " + err);
+  CheckSections(sections);
+  auto d = std::make_shared<Data>();
+  d->options = opt;
+  d->rule = MakeGaussRule(opt.gauss_points);
+  d->sp = MakeStripPanels(sections, opt);
+  d->mirror = MirrorPartners(d->sp);
+  for (int j = 0; j < d->sp.n; ++j)
+    if (d->mirror.empty() || j <= d->mirror[j]) d->fields.push_back(j);
+  for (int j : d->fields) d->body_fields += j < d->sp.nb;
+  d->rankine = RankineRows(d->sp, d->fields);
+  data_ = std::move(d);
+}
+
+bool SectionHeaveSolver::mirror_symmetric() const { return !data_->mirror.empty(); }
+
+Eigen::VectorXcd SectionHeaveSolver::HeavePotential(double omega) const {
+  if (!(omega > 0) || !std::isfinite(omega))
+    throw std::invalid_argument("frequency-domain solver: omega = " + std::to_string(omega) +
+                                " rad/s must be > 0");
+  const Data& d = *data_;
+  const StripPanels& sp = d.sp;
+  const double nu = omega * omega / d.options.g_m_s2;
+  const auto nf = static_cast<Eigen::Index>(d.fields.size()), nfb = static_cast<Eigen::Index>(d.body_fields);
+  Eigen::MatrixXcd A(nf, sp.n), Phi(nfb, sp.n);
+  AssembleRows(sp, d.fields, d.rankine, nu, d.rule, d.options.max_subdivision, &A, &Phi);
+  Eigen::VectorXcd rhs = Eigen::VectorXcd::Zero(nf);  // unit heave velocity: ∂ψ/∂n = n_z; lid rows 0
+  for (Eigen::Index r = 0; r < nfb; ++r) rhs[r] = sp.body[d.fields[r]].Normal()[1];
+  Eigen::VectorXcd out(sp.nb);
+  if (d.mirror.empty()) {
+    const Eigen::VectorXcd sigma = Eigen::PartialPivLU<Eigen::MatrixXcd>(A).solve(rhs);
+    out = Phi * sigma;
+    return out;
+  }
+  // σ_m(j) = σ_j: the columns of mirror partners added, the unknowns those of the half.
+  Eigen::MatrixXcd Ah(nf, nf), Phih(nfb, nf);
+  for (Eigen::Index c = 0; c < nf; ++c) {
+    const int j = d.fields[c], mj = d.mirror[j];
+    Ah.col(c) = A.col(j);
+    Phih.col(c) = Phi.col(j);
+    if (mj != j) {
+      Ah.col(c) += A.col(mj);
+      Phih.col(c) += Phi.col(mj);
+    }
+  }
+  const Eigen::VectorXcd sigma = Eigen::PartialPivLU<Eigen::MatrixXcd>(Ah).solve(rhs);
+  const Eigen::VectorXcd half = Phih * sigma;
+  for (Eigen::Index r = 0; r < nfb; ++r) {
+    out[d.fields[r]] = half[r];
+    out[d.mirror[d.fields[r]]] = half[r];
+  }
   return out;
 }
 

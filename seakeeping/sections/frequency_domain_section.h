@@ -23,6 +23,7 @@
 #include <Eigen/Dense>
 #include <array>
 #include <complex>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -81,6 +82,33 @@ SectionHydrodynamics SolveSectionFrequencyDomain(const std::vector<std::vector<P
 std::vector<SectionHydrodynamics> SolveSectionFrequencyDomain(const std::vector<std::vector<Panel>>& sections,
                                                               const std::vector<double>& omegas_rad_s,
                                                               const FrequencyDomainOptions& options);
+
+/// Whether panels b are the mirror images of panels a about the line y = y_axis_m in reverse order (b[k] is
+/// a[size − 1 − k] mirrored, its end points swapped: the two halves of a PanelSymmetricSection, or two
+/// bodies placed symmetrically), to tol_m [m] in every coordinate and 1e-12 in the turning.
+bool MirrorImagePanels(const std::vector<Panel>& a, const std::vector<Panel>& b, double y_axis_m, double tol_m);
+
+/// The heave radiation potential of one strip at many frequencies (conventional strip theory needs only
+/// that): the panels, the lid and the frequency-independent Rankine parts of the influence matrices (the
+/// closed-form ln r + ln r' integrals) are prepared once, so each frequency costs only the wave part and the
+/// solve. A strip that is mirror-symmetric about a vertical line (each panel the reversed mirror image of its
+/// partner to 1e-12 of the strip's size, as PanelSymmetricSection and symmetric multihulls make them) is
+/// solved on one half: the heave potential is symmetric, so the source densities of mirror panels are equal
+/// and the system has the rows and columns of one half only (collocation at that half's points). Otherwise
+/// the full system. Same validation and exceptions as SolveSectionFrequencyDomain; thread-safe const use.
+class SectionHeaveSolver {
+ public:
+  SectionHeaveSolver(const std::vector<std::vector<Panel>>& sections, const FrequencyDomainOptions& options);
+  /// ψ_heave per unit heave velocity [m²/s per m/s] at the body panel midpoints (all sections, input order)
+  /// at omega_rad_s > 0: SolveSectionFrequencyDomain(...).radiation_potential.col(1) to rounding.
+  Eigen::VectorXcd HeavePotential(double omega_rad_s) const;
+  /// Whether the half-strip (mirror) reduction is used.
+  bool mirror_symmetric() const;
+
+ private:
+  struct Data;
+  std::shared_ptr<const Data> data_;
+};
 
 /// Sectional wave-load integrals for strip theory: an incident wave of elevation Re[A e^{i(ω₀t − k x cosβ −
 /// k_y y)}] (k [1/m] its wavenumber, k_y = k sinβ its transverse wavenumber) seen by the section of `hydro`

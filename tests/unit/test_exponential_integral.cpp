@@ -9,6 +9,7 @@
 using C = std::complex<double>;
 using hullopt::sk::ExpIntE1;
 using hullopt::sk::ScaledExpIntE1;
+using hullopt::sk::ScaledExpIntE1AndPlusLog;
 using hullopt::sk::ScaledExpIntE1PlusLog;
 
 namespace {
@@ -70,5 +71,38 @@ TEST_CASE("e^z E1 + ln z is continuous at 0 with value −γ and matches the def
   for (const auto& r : kRefs) {
     const C expect = r.scaled + std::log(r.z);
     CHECK(std::abs(ScaledExpIntE1PlusLog(r.z) - expect) <= 1e-13 * (1 + std::abs(expect)));
+  }
+}
+
+TEST_CASE("e^z E1 and e^z E1 + ln z together match mpmath where the wave Green function evaluates them",
+          "[e1]") {
+  // The second quadrant (z = ν(Z + i|Y|), Z <= 0): |z| ≈ 1 (where ln|z| ≈ 0 is taken as ½ ln(x² + y²)), the
+  // power series near the negative real axis out to |z| = 40 (up to ~120 terms), the cut from above, tiny
+  // |z|. mpmath 1.3 at 40 digits: e^z E1(z) (on the cut e^z (−Ei(−z) − iπ)) and that + ln z. Tolerances as
+  // above: 1e-13 of the value (plus_log: of 1 + its magnitude, ln z being added to O(1) terms).
+  struct Pair {
+    C z, scaled, plus_log;
+  };
+  const Pair refs[] = {
+      {{-0.6, 0.8}, {0.057385771136300314, -0.85636315320123314}, {0.057385771136300336, 1.3579342823869478}},
+      {{-0.999, 0.01}, {-0.68536806515596327, -1.1537850675440936}, {-0.68631846784920395, 1.9777979103509275}},
+      {{0.3, 0.95}, {0.43745385625491144, -0.50514662599290443}, {0.43368972304451561, 0.75977082939714005}},
+      {{-2.5, 4.3}, {-0.067035077774510239, -0.19966071697042909}, {1.5371756057076607, 1.8977628812582182}},
+      {{-4.99, 0.2}, {-0.26660984435737031, -0.035149603997886939}, {1.3416286305761034, 3.066384330455982}},
+      {{-20, 3}, {-0.051491555836674155, -0.0081838101913215643}, {2.9553660221847267, 2.9845188957889744}},
+      {{-39, 0.5}, {-0.026330527721424368, -0.00034697873932592736}, {3.6373132944294441, 3.1284258643775667}},
+      {{-10, 4.9}, {-0.085583634919109738, -0.047775298533415967}, {2.3245974688382308, 2.6382017018451528}},
+      {{-0.05, 0.02}, {2.2336076495444654, -2.5627620789334398}, {-0.68791462145038886, 0.19832419754398858}},
+      {{-1e-05, 3e-05}, {9.7843661807240864, -1.8922044258334692}, {-0.57726673774911913, 0.00034245535806958815}},
+      {{-3.0, 0.0}, {-0.49457640134864124, -0.15641068822825414}, {0.60403588731946846, 2.9851819653615391}},
+      {{-1.2, 2.9}, {-0.029197266124086022, -0.31519712917335248}, {1.1145384614679127, 1.6479393418370599}},
+  };
+  for (const auto& r : refs) {
+    INFO("z = " << r.z);
+    for (const auto& v : {ScaledExpIntE1AndPlusLog(r.z), ScaledExpIntE1AndPlusLog(r.z, std::exp(r.z))}) {
+      CHECK(std::abs(v.scaled - r.scaled) <= kRelTol * std::abs(r.scaled));
+      CHECK(std::abs(v.plus_log - r.plus_log) <= kRelTol * (1 + std::abs(r.plus_log)));
+    }
+    CHECK(std::abs(ScaledExpIntE1(r.z) - r.scaled) <= kRelTol * std::abs(r.scaled));
   }
 }

@@ -297,6 +297,44 @@ TEST_CASE("two semicircles side by side: symmetric, finite, different from twice
   CHECK(energy_mismatch(two56) <= kTolEnergy);
 }
 
+TEST_CASE("heave solver (Rankine parts once, half strip when symmetric) equals the full solver", "[fd][heave]") {
+  // SectionHeaveSolver solves the same discrete problem as SolveSectionFrequencyDomain, for a mirror-
+  // symmetric strip on one half (σ of mirror panels equal): the heave potentials agree to rounding amplified
+  // by the system's condition (~1e-13 here); 1e-11 of the largest potential leaves room for that and is far
+  // below any error of the reduction itself (a wrong mirror pairing is O(1)).
+  constexpr double kTolRounding = 1e-11;
+  const auto port = PanelSymmetricSection(SemicircleContour(kR, 4000), 28, +1.5 * kR);
+  const auto stbd = PanelSymmetricSection(SemicircleContour(kR, 4000), 28, -1.5 * kR);
+  const auto box = PanelSymmetricSection(RectangleContour(1.6 * kR, 0.7 * kR), 20, -1.5 * kR);
+  FrequencyDomainOptions odd_lid = Options();
+  odd_lid.lid_panels = 7;  // a lid panel on the axis, its own mirror image
+  struct Case {
+    const char* name;
+    std::vector<std::vector<Panel>> sections;
+    FrequencyDomainOptions options;
+    bool symmetric;
+  };
+  const Case cases[] = {
+      {"semicircle", {Semicircle(28)}, Options(), true},
+      {"semicircle, odd lid", {Semicircle(28)}, odd_lid, true},
+      {"two semicircles", {port, stbd}, Options(), true},
+      {"semicircle and rectangle (not symmetric)", {port, box}, Options(), false},
+  };
+  for (const auto& c : cases) {
+    INFO(c.name);
+    const SectionHeaveSolver solver(c.sections, c.options);
+    CHECK(solver.mirror_symmetric() == c.symmetric);
+    for (double nuR : {0.1, 0.8, 2.5}) {
+      INFO("nu R = " << nuR);
+      const double w = std::sqrt(nuR * kG / kR);
+      const Eigen::VectorXcd full = SolveSectionFrequencyDomain(c.sections, w, c.options).radiation_potential.col(1);
+      const Eigen::VectorXcd psi = solver.HeavePotential(w);
+      REQUIRE(psi.size() == full.size());
+      CHECK((psi - full).cwiseAbs().maxCoeff() <= kTolRounding * full.cwiseAbs().maxCoeff());
+    }
+  }
+}
+
 TEST_CASE("options are validated", "[fd]") {
   FrequencyDomainOptions o;
   std::string e;

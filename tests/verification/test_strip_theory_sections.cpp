@@ -1,6 +1,7 @@
 // Strip theory on 2D frequency-domain sections: the reciprocity row of a section reproduces the panel solver's
 // own heave added mass and damping (two routes through the solver), and strip theory on a real hull keeps the
 // long-wave limits.
+#include <array>
 #include <catch2/catch.hpp>
 #include <cmath>
 
@@ -30,6 +31,47 @@ TEST_CASE("section row: R·n_z = −(iω a33 + b33)", "[stf][sections]") {
     // The row integrates ψ at panel midpoints (one-point rule); the solver's a33/b33 use the same potentials:
     // agreement to the midpoint-quadrature level of the potential, 1e-6 relative.
     CHECK(std::abs(rn - expect) < 1e-6 * std::abs(expect));
+  }
+}
+
+TEST_CASE("section rows without interaction: each body alone, mirror bodies shared", "[stf][sections]") {
+  // An asymmetric polygon at y ≈ +2 and its mirror image about y = 0 (one solver, read in reverse panel
+  // order), and a rectangle at y = 5 (its own), each solved alone: the rows equal iωρ ψ_i l_i with ψ from
+  // SolveSectionFrequencyDomain on that body by itself, to rounding (1e-11 of the largest entry: the same
+  // discrete problem, see the heave solver test of verification_frequency_domain_section).
+  constexpr double kTolRounding = 1e-11;
+  // Port waterline → keel → starboard waterline, 4 panels per edge: 16 panels.
+  const std::vector<std::array<double, 2>> corners = {{3.0, 0.0}, {2.8, -0.6}, {2.0, -0.8}, {1.5, -0.5}, {1.3, 0.0}};
+  std::vector<sk::Panel> poly, mirror;
+  for (std::size_t e = 0; e + 1 < corners.size(); ++e)
+    for (int q = 0; q < 4; ++q) {
+      const auto& a = corners[e];
+      const auto& b = corners[e + 1];
+      poly.push_back({a[0] + (b[0] - a[0]) * q / 4, a[1] + (b[1] - a[1]) * q / 4, a[0] + (b[0] - a[0]) * (q + 1) / 4,
+                      a[1] + (b[1] - a[1]) * (q + 1) / 4});
+    }
+  for (auto it = poly.rbegin(); it != poly.rend(); ++it) mirror.push_back({-it->y2, it->z2, -it->y1, it->z1});
+  const std::vector<std::vector<sk::Panel>> bodies = {
+      poly, sk::PanelSymmetricSection(sk::RectangleContour(1.2, 0.5), 16, 5.0), mirror};
+  sk::StripKernel g;
+  g.rho_kg_m3 = 1025.0;
+  g.g_m_s2 = 9.81;
+  g.panels.emplace_back();
+  for (const auto& b : bodies) g.panels[0].insert(g.panels[0].end(), b.begin(), b.end());
+  const auto rows = sk::FrequencyDomainSectionRows(g, 16, false);
+  sk::FrequencyDomainOptions o;
+  o.rho_kg_m3 = 1025.0;
+  for (double w : {0.7, 2.0}) {
+    const Eigen::RowVectorXcd r = rows(0, w);
+    REQUIRE(r.size() == 48);
+    Eigen::RowVectorXcd expect(48);
+    for (int b = 0; b < 3; ++b) {
+      const auto h = sk::SolveSectionFrequencyDomain({bodies[b]}, w, o);
+      for (int k = 0; k < 16; ++k)
+        expect[16 * b + k] =
+            std::complex<double>(0.0, w * 1025.0) * h.radiation_potential(k, 1) * bodies[b][k].Length();
+    }
+    CHECK((r - expect).cwiseAbs().maxCoeff() <= kTolRounding * expect.cwiseAbs().maxCoeff());
   }
 }
 
