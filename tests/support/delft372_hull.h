@@ -8,6 +8,7 @@
 #include <string>
 
 #include "parametric_hull/hull_form.h"
+#include "seakeeping/motions/rao_solver.h"
 
 namespace hullopt::testing {
 
@@ -39,5 +40,17 @@ inline hull::HullForm Delft372Hull(const std::string& source_dir) {
 
 /// Model particulars for the motion tests (delft372_particulars.csv): whole catamaran.
 inline hull::MassProperties Delft372Mass() { return {87.07, 1.41, 0.782, 0.34}; }
+
+/// The solver set-up the Delft 372 verification and validation tests share: the default 40 × 14 strips and
+/// Cs 0.024 (the value the reference paper takes for this hull).
+inline sk::RaoSolverOptions Delft372SolverOptions(sk::RaoSolverOptions::Method method) {
+  sk::RaoSolverOptions o;
+  o.method = method;
+  o.sections = 40;
+  o.panels = 14;
+  o.motion.damping_cs = 0.024;
+  o.motion.hull_name = "Delft 372";
+  return o;
+}
 
 }  // namespace hullopt::testing

@@ -73,16 +73,6 @@ struct ComplexCurve {
   cd At(double v) const { return std::polar(amp.At(v), phase.At(v) * M_PI / 180); }
 };
 
-sk::RaoSolverOptions Options(sk::RaoSolverOptions::Method m) {
-  sk::RaoSolverOptions o;
-  o.method = m;
-  o.sections = 40;
-  o.panels = 14;
-  o.motion.damping_cs = 0.024;
-  o.motion.hull_name = "Delft 372";
-  return o;
-}
-
 double WaveFromEncounter(double we, double U) { return (-1 + std::sqrt(1 + 4 * U * we / kG)) * kG / (2 * U); }
 
 // Linear interpolation of a computed coefficient at ω_e √(L/g) = v.
@@ -108,7 +98,7 @@ Measured ReadMeasured() {
 
 sk::CoefficientTable Compute(sk::RaoSolverOptions::Method m, double U, const std::vector<double>& omega) {
   return sk::ComputeCoefficients(hullopt::testing::Delft372Hull(HULLOPT_SOURCE_DIR), hullopt::testing::Delft372Mass(), U,
-                                 kRho, kG, omega, Options(m), sk::TransientGreenKernelBuilder());
+                                 kRho, kG, omega, hullopt::testing::Delft372SolverOptions(m), sk::TransientGreenKernelBuilder());
 }
 
 // Encounter frequencies ω_e √(L/g) = 2.5 … 9.2 (the measured range), count points (strip theory solves every
@@ -274,7 +264,7 @@ TEST_CASE("Delft 372 Fn 0.75: which measured link moves the heave peak", "[valid
     // Bookkeeping against the RAO solve for the time-domain method (strip theory's is the verification test's).
     const auto raos = stf ? sk::RaoTable{}
                           : sk::ComputeRaos(hullopt::testing::Delft372Hull(HULLOPT_SOURCE_DIR),
-                                            hullopt::testing::Delft372Mass(), U, kRho, kG, omega, Options(method),
+                                            hullopt::testing::Delft372Mass(), U, kRho, kG, omega, hullopt::testing::Delft372SolverOptions(method),
                                             sk::TransientGreenKernelBuilder());
     std::printf("\n%s, Fn 0.75: heave peak with one measured link substituted (tank 2.53 at lambda/L 1.80)\n",
                 stf ? "strip theory (STF)" : "time-domain strip, 40 x 14, Cs 0.024");

@@ -31,14 +31,9 @@ sk::RaoTable Compute(sk::RaoSolverOptions::Method method, int wavelengths) {
   const double U = 0.75 * std::sqrt(kG * kL);
   const auto w = sk::WaveFrequencies(
       sk::FrequencySpec::Range(sk::FrequencySpec::Quantity::kLambdaOverL, 0.8, 3.0, wavelengths), U, kG, kL);
-  sk::RaoSolverOptions o;
-  o.method = method;
-  o.sections = 40;
-  o.panels = 14;
-  o.motion.damping_cs = 0.024;
-  o.motion.hull_name = "delft372";
   return sk::ComputeRaos(hullopt::testing::Delft372Hull(HULLOPT_SOURCE_DIR), hullopt::testing::Delft372Mass(), U,
-                         kRho, kG, w, o, sk::TransientGreenKernelBuilder());
+                         kRho, kG, w, hullopt::testing::Delft372SolverOptions(method),
+                         sk::TransientGreenKernelBuilder());
 }
 
 // omega, Re/Im heave, Re/Im pitch per row.
