@@ -22,7 +22,7 @@ namespace {
 
 void RunCoefficients(const std::string& config_file, const std::string& out_dir) {
   auto root = io::YamlMap::LoadFile(config_file);
-  const std::string name = std::filesystem::path(config_file).stem().string();
+  const std::string name = io::ParseDesignName(root, std::filesystem::path(config_file).stem().string());
   eval::DesignCase d = io::LoadDesignCase(root, config_file, name);
   if (!d.has_frequencies) root.Map("solver").Fail("frequencies", "required: the frequencies of the coefficients");
   // compare: measured points to draw over the computed curves (io/measured_coefficients_csv.h).

@@ -10,6 +10,7 @@
 #include "app/single_design.h"
 #include "app/output_dir.h"
 #include "app/run_checks.h"
+#include "io/design_config.h"
 #include "io/bodyplan_svg.h"
 #include "io/evaluation_report.h"
 #include "io/html_report.h"
@@ -70,9 +71,7 @@ void AddReport(const std::string& out, const std::string& config, const YAML::No
 
 void RunDesign(const std::string& config, const std::string& out) {
   io::YamlMap root = io::YamlMap::LoadFile(config);
-  // Recorded in config.resolved.yaml, so that a re-run keeps the design's name.
-  const std::string name = root.String("name", std::filesystem::path(config).stem().string());
-  if (name.empty()) root.Fail("name", "must not be empty");
+  const std::string name = io::ParseDesignName(root, std::filesystem::path(config).stem().string());
   SingleDesign sd = EvaluateSingleDesign(root, name, "design", true,
                                          [&] { CheckOutputDirConfig(out, "design", root.resolved()); });
   const eval::DesignCase& dc = sd.design;

@@ -169,8 +169,7 @@ void Run(const std::string& config_file, const std::string& out_dir) {
     DesignInput in;
     in.where = root.Where("hull");
     // Recorded in config.resolved.yaml, so that a re-run keeps the design's name.
-    in.design.name = root.String("name", std::filesystem::path(config_file).stem().string());
-    if (in.design.name.empty()) root.Fail("name", "must not be empty");
+    in.design.name = io::ParseDesignName(root, std::filesystem::path(config_file).stem().string());
     const eval::DesignCase dc = io::LoadDesignCase(root, config_file, in.design.name);
     const std::vector<double> omega = eval::SeaFrequencies(dc);
     CheckRunCost("evaluate", io::StripWorkFromResolved(root.resolved(), static_cast<long>(omega.size())));

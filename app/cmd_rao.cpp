@@ -8,6 +8,7 @@
 #include "app/commands.h"
 #include "app/output_dir.h"
 #include "app/run_checks.h"
+#include "io/design_config.h"
 #include "io/hull_config.h"
 #include "io/input_error.h"
 #include "io/motion_config.h"
@@ -33,9 +34,9 @@ void RunRao(const std::string& config_file, const std::string& out_dir) {
   const io::SpeedOptions speed = io::ParseSpeed(root, true);
   std::vector<std::string> input_warnings;
   const hull::HullForm hull = io::LoadHull(hull_opts, config_file, &input_warnings);
-  const std::string hull_name = hull_opts.file.empty()
-                                    ? std::filesystem::path(config_file).stem().string()
-                                    : std::filesystem::path(hull_opts.file).stem().string();
+  const std::string hull_name = io::ParseDesignName(root, hull_opts.file.empty()
+                                                              ? std::filesystem::path(config_file).stem().string()
+                                                              : std::filesystem::path(hull_opts.file).stem().string());
   auto solver_map = root.Map("solver");
   const std::string kernel_kind =
       solver_map.Choice("kernel", {"transient_green", "impulsive"}, "transient_green");

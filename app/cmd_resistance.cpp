@@ -8,6 +8,7 @@
 
 #include "app/commands.h"
 #include "app/output_dir.h"
+#include "io/design_config.h"
 #include "io/hull_config.h"
 #include "io/input_error.h"
 #include "io/resistance_config.h"
@@ -32,11 +33,12 @@ void RunResistance(const std::string& config, const std::string& out_dir) {
   bool has_speed = false;
   const io::SpeedOptions speed = io::ParseSpeed(root, false, &has_speed);
   const io::ResistanceConfig rc = io::ParseResistanceConfig(root, true);
+  const std::string hull_name = io::ParseDesignName(root, hull_opts.file.empty()
+                                                              ? std::filesystem::path(config).stem().string()
+                                                              : std::filesystem::path(hull_opts.file).stem().string());
   for (const char* k : kOtherCommandsKeys) root.Skip(k);
   root.Finish();
   const hull::HullForm hull = io::LoadHull(hull_opts, config);
-  const std::string hull_name = hull_opts.file.empty() ? std::filesystem::path(config).stem().string()
-                                                       : std::filesystem::path(hull_opts.file).stem().string();
   hull::Hydrostatics hs;
   std::unique_ptr<res::CalmWaterResistance> model;
   try {

@@ -6,6 +6,12 @@
 
 namespace hullopt::io {
 
+std::string ParseDesignName(YamlMap& root, const std::string& fallback) {
+  const std::string name = root.String("name", fallback);
+  if (name.empty()) root.Fail("name", "must not be empty");
+  return name;
+}
+
 eval::DesignCase LoadDesignCase(YamlMap& root, const std::string& config_file, const std::string& name,
                                 bool read_speed, DesignConfig* config) {
   eval::DesignCase d;

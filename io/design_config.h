@@ -21,6 +21,10 @@ struct DesignConfig {
   bool has_frequencies = false;
 };
 
+/// The design's `name` key (default `fallback`, usually the config or offsets file's name), not empty.
+/// Recorded in config.resolved.yaml, so that a re-run keeps the name.
+std::string ParseDesignName(YamlMap& root, const std::string& fallback);
+
 /// Reads water, hull, speed, solver and mass from root and builds the hull. Consumes exactly these keys (the
 /// caller calls root.Finish()). With read_speed false the speed is left to the caller (speed_m_s = 0). Errors
 /// are InputError naming the file, key and rule. `config` (optional) receives the options read.

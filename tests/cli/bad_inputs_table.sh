@@ -278,7 +278,7 @@ DESC='trihull at the documented maxima `sections: 400, panels: 100` (cost estima
 run cost_refused 1 "exceeds the limit of 8 GiB: solver.sections = 400 and solver.panels = 100 drive it" - -- rao "$T/tri_max.yaml" --out "$T/o52"
 DESC='rao into a folder written by rao with another config'
 "$BIN" rao "$T/sw1.yaml" --out "$T/o53" > /dev/null 2>&1
-sed 's/sections: 20/sections: 24/' "$T/sw1.yaml" > "$T/sw1_24.yaml"
+{ sed 's/sections: 20/sections: 24/' "$T/sw1.yaml"; echo "name: sw1"; } > "$T/sw1_24.yaml"  # same name, other strips
 run other_config 1 "run with a different config (first difference: key 'solver.sections': '20' before, now '24')" - -- rao "$T/sw1_24.yaml" --out "$T/o53"
 
 DESC='`coefficients` with `path: time_marching` (no periodic steady state to take coefficients from)'

@@ -3,8 +3,8 @@
 # example_tree.sh: a copy of configs/, examples/ and data/ with coarse solver settings) is run from one working
 # folder, then its config.resolved.yaml from another (/) into a new folder, and the main outputs are compared:
 #   - CSV files: data rows byte-identical; the comment lines ('#') are left out of the comparison because they
-#     name the source (a design named after its config file: "# hull: coefficients_delft372" against
-#     "# hull: config.resolved"); the wall_time_s column of history.csv and samples.csv is left out (timing).
+#     name the source files; the "# hull: NAME" line must be the same (the name, by default the config's or
+#     offsets file's, is recorded in config.resolved.yaml); the wall_time_s column of history.csv and samples.csv is left out (timing).
 #   - JSON files: every value identical except the timings wall_time_s and fit_seconds.
 #   - calibrated_solver*.yaml: identical apart from comment lines.
 #   - a message that names the config file to edit (e.g. "extend solver.frequencies in FILE") names the file
@@ -61,7 +61,9 @@ while read -r cmd cfg; do
     b=$(basename "$f")
     [ -e "$two/$b" ] || { echo "FAIL $name: the re-run wrote no $b"; fail=1; continue; }
     case "$b" in
-      *.csv) cmp -s <(csv_data "$f") <(csv_data "$two/$b") ;;
+      # The design's name is recorded in the resolved config, so the re-run's "# hull:" line names it too.
+      *.csv) cmp -s <(csv_data "$f") <(csv_data "$two/$b") &&
+               cmp -s <(grep '^# hull: ' "$f") <(grep '^# hull: ' "$two/$b") ;;
       *.json) same_json "$f" "$two/$b" "$T/tree/$cfg" "$one/config.resolved.yaml" ;;
       *.yaml) cmp -s <(grep -v '^#' "$f") <(grep -v '^#' "$two/$b") ;;
     esac || { echo "FAIL $name: $b differs after the re-run"; fail=1; }
