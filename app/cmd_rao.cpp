@@ -60,11 +60,7 @@ void RunRao(const std::string& config_file, const std::string& out_dir) {
   const hull::HullForm running = io::ApplyHullAttitude(hull_opts, hull, mass.lcg_m_from_ap, config_file);
   try {
     // Sections first: a section that does not reach the waterline is named with its body and station.
-    sk::StripGeometryOptions geo;
-    geo.sections = sc.rao.sections;
-    geo.panels = sc.rao.panels;
-    geo.layout = sc.rao.layout;
-    sk::StripKernelGeometry(running, geo, 1.0, water.rho_kg_m3, water.g_m_s2);
+    sk::StripKernelGeometry(running, sc.rao.Geometry(), 1.0, water.rho_kg_m3, water.g_m_s2);
     hull::ComputeHydrostatics(running, water.rho_kg_m3);
   } catch (const std::exception& e) {
     throw io::InputError("hull '" + hull_name + "': " + e.what());

@@ -89,6 +89,19 @@ SolverConfig ParseSolverConfig(YamlMap& s, bool frequencies_required) {
       s.Fail("time_scheme", "applies to path: time_marching only (the periodic path has no time steps); remove it "
                             "or set path: time_marching");
   }
+  // Read (and recorded) only when given, so that configs without it resolve as before.
+  if (s.Has("panel_spacing")) {
+    auto p = s.Map("panel_spacing");
+    o.spacing.end_spacing = p.Number("end_spacing", o.spacing.end_spacing);
+    if (!(o.spacing.end_spacing > 0.0 && o.spacing.end_spacing <= 1.0))
+      p.Fail("end_spacing", "must lie in (0, 1]: the panel length at the waterline and at corners as a fraction of "
+                            "the uniform spacing (default 0.25)");
+    o.spacing.grading = p.Number("grading", o.spacing.grading);
+    if (!(o.spacing.grading > 0.0 && o.spacing.grading <= 10.0))
+      p.Fail("grading", "must lie in (0, 10]: the growth of the spacing with the distance from the waterline or a "
+                        "corner (default 0.5)");
+    p.Finish();
+  }
   o.interaction = s.Boolean("interaction", o.interaction);
   o.layout = s.Choice("stations", {"cell_faces", "cell_midpoints"}, "cell_faces") == "cell_midpoints"
                  ? sk::StationLayout::kCellMidpoints

@@ -24,12 +24,17 @@ StripKernelBuilder TransientGreenKernelBuilder(SectionalForce force) {
   };
 }
 
-bool RaoSolverOptions::IsValid(std::string* error) const {
+StripGeometryOptions RaoSolverOptions::Geometry() const {
   StripGeometryOptions g;
   g.sections = sections;
   g.panels = panels;
   g.layout = layout;
-  if (!g.IsValid(error)) return false;
+  g.spacing = spacing;
+  return g;
+}
+
+bool RaoSolverOptions::IsValid(std::string* error) const {
+  if (!Geometry().IsValid(error)) return false;
   if (!motion.IsValid(error)) return false;
   if (path == Path::kTimeMarching && !marching.IsValid(error)) return false;
   return true;
@@ -40,10 +45,7 @@ StripKernel BuildHullStripKernel(const hull::HullForm& hull, const RaoSolverOpti
                                  const StripKernelBuilder& builder) {
   std::string err;
   if (!options.IsValid(&err)) throw std::invalid_argument(err);
-  StripGeometryOptions g;
-  g.sections = options.sections;
-  g.panels = options.panels;
-  g.layout = options.layout;
+  StripGeometryOptions g = options.Geometry();
   if (options.interaction || (hull.bodies.size() == 1 && hull.bodies[0].y_centre_m == 0.0)) {
     StripKernel k = StripKernelGeometry(hull, g, speed_m_s, rho_kg_m3, g_m_s2);
     builder(&k);
@@ -67,10 +69,7 @@ RaoTable ComputeRaos(const hull::HullForm& hull, const hull::MassProperties& mas
   if (options.method == RaoSolverOptions::Method::kStripTheory) {
     std::string err;
     if (!options.IsValid(&err)) throw std::invalid_argument(err);
-    StripGeometryOptions g;
-    g.sections = options.sections;
-    g.panels = options.panels;
-    g.layout = options.layout;  // the same strip stations as the time-domain method
+    StripGeometryOptions g = options.Geometry();  // the same strip stations as the time-domain method
     const StripKernel geometry = StripKernelGeometry(hull, g, speed_m_s, rho_kg_m3, g_m_s2);
     const HeadSeaShipModel model(geometry, mass, options.motion);
     RaoTable t = SolveStripTheoryRaos(model, omega_rad_s,
@@ -105,10 +104,7 @@ CoefficientTable ComputeCoefficients(const hull::HullForm& hull, const hull::Mas
         "coefficients come from the periodic steady state of the strip equations; path: time_marching "
         "marches one history and has none (use path: periodic, the same kernel)");
   if (omega_rad_s.empty()) throw std::invalid_argument("coefficients: the frequency list is empty");
-  StripGeometryOptions g;
-  g.sections = options.sections;
-  g.panels = options.panels;
-  g.layout = options.layout;
+  StripGeometryOptions g = options.Geometry();
   // Geometry first (cheap): the frequency check needs only Δt.
   StripKernel kernel = StripKernelGeometry(hull, g, speed_m_s, rho_kg_m3, g_m_s2);
   for (double w : omega_rad_s) {

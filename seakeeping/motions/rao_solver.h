@@ -32,10 +32,13 @@ struct RaoSolverOptions {
   int sections = 40;                         ///< strip steps along the hull (paper 40)
   int panels = 14;                           ///< panels per wetted section of one body (paper 14)
   StationLayout layout = kDefaultStationLayout;  ///< where the strip steps sit (strip_kernel.h)
+  PanelSpacing spacing;  ///< how each section's panels are spread over its girth (panel.h)
   bool interaction = true;  ///< multihull bodies share the strips; false: each body alone, forces added
   Path path = Path::kPeriodic;
   MotionOptions motion;      ///< Cs, hull name
   MarchingOptions marching;  ///< time marching only
+  /// The strip geometry these options ask for (all bodies).
+  StripGeometryOptions Geometry() const;
   bool IsValid(std::string* error) const;
 };
 

@@ -19,6 +19,10 @@ bool StripGeometryOptions::IsValid(std::string* error) const {
     os << "panels = " << panels << ": must be even and >= 4";
   } else if (layout == StationLayout::kCellFaces && sections < 3) {
     os << "sections = " << sections << ": must be >= 3 with stations at the cell faces";
+  } else if (!(spacing.end_spacing > 0.0 && spacing.end_spacing <= 1.0)) {
+    os << "spacing.end_spacing = " << spacing.end_spacing << ": must lie in (0, 1] (a fraction of the uniform spacing)";
+  } else if (!(spacing.grading > 0.0 && spacing.grading <= 10.0)) {
+    os << "spacing.grading = " << spacing.grading << ": must lie in (0, 10]";
   } else if (body < -1) {
     os << "body = " << body << ": must be -1 (all bodies) or a body index";
   }
@@ -94,7 +98,7 @@ StripKernel StripKernelGeometry(const hull::HullForm& hull, const StripGeometryO
       }
       const bool mirrored = options.body < 0 && b->y_centre_m > 0.0;
       try {
-        auto ps = PanelSymmetricSection(half, options.panels, b->y_centre_m);
+        auto ps = PanelSymmetricSection(half, options.panels, b->y_centre_m, options.spacing);
         panels.insert(panels.end(), ps.begin(), ps.end());
         if (mirrored) {  // the same panels shifted to the mirror demihull (y → y − 2 y_centre)
           for (auto& p : ps) p.y1 -= 2.0 * b->y_centre_m, p.y2 -= 2.0 * b->y_centre_m;

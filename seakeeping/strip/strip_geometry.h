@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "parametric_hull/hull_form.h"
+#include "seakeeping/green/panel.h"
 #include "seakeeping/strip/strip_kernel.h"
 
 namespace hullopt::sk {
@@ -23,6 +24,8 @@ struct StripGeometryOptions {
   /// body of that index, without its mirror (one demihull alone).
   int body = -1;
   StationLayout layout = kDefaultStationLayout;  ///< kCellFaces needs sections >= 3
+  /// How the panels of a section are spread over its girth (end_spacing in (0, 1], grading in (0, 10]).
+  PanelSpacing spacing;
   bool IsValid(std::string* error) const;
 };
 

@@ -105,3 +105,22 @@ TEST_CASE("solver.time_scheme: by name, time-marching path only", "[config]") {
   CHECK_THROWS_WITH(parse("time_scheme: paper_single_pass\n" + f),
                     Catch::Contains("solver.time_scheme") && Catch::Contains("path: time_marching only"));
 }
+
+TEST_CASE("solver.panel_spacing: read only when given, into the strip geometry; bad values name the key",
+          "[config]") {
+  auto plain = FromText("frequencies: { omega_rad_s: [1.0] }\n");
+  const auto d = hullopt::io::ParseSolverConfig(plain);
+  CHECK_FALSE(plain.resolved()["panel_spacing"]);  // configs without it resolve as before
+  CHECK(d.rao.Geometry().spacing.end_spacing == hullopt::sk::PanelSpacing{}.end_spacing);
+  auto given = FromText("panel_spacing: { end_spacing: 0.08 }\nfrequencies: { omega_rad_s: [1.0] }\n");
+  const auto c = hullopt::io::ParseSolverConfig(given);
+  CHECK(c.rao.Geometry().spacing.end_spacing == 0.08);
+  CHECK(c.rao.Geometry().spacing.grading == hullopt::sk::PanelSpacing{}.grading);
+  auto bad = [](const std::string& text) {
+    auto m = FromText(text + "frequencies: { omega_rad_s: [1.0] }\n");
+    hullopt::io::ParseSolverConfig(m);
+  };
+  CHECK_THROWS_WITH(bad("panel_spacing: { end_spacing: 0 }\n"), Catch::Contains("solver.panel_spacing.end_spacing"));
+  CHECK_THROWS_WITH(bad("panel_spacing: { grading: 20 }\n"), Catch::Contains("solver.panel_spacing.grading"));
+  CHECK_THROWS_WITH(bad("panel_spacing: { ends: 0.1 }\n"), Catch::Contains("ends"));
+}

@@ -186,3 +186,28 @@ TEST_CASE("demihulls far apart: with and without interaction agree", "[strip_geo
     CHECK(std::abs(with.pitch[i] - without.pitch[i]) < kFarTol * std::abs(with.pitch[i]));
   }
 }
+
+TEST_CASE("strip geometry: the panel spacing option reaches the sections", "[strip_geometry]") {
+  // A smaller end_spacing gives a shorter waterline panel (the panels share ∫ ds/h equally and h is smallest at
+  // the waterline and the corners; with the count fixed, only the order is certain, not the ratio).
+  hull::HullForm h;
+  h.type = "monohull";
+  h.draught_m = 0.5;
+  h.length_m = 10;
+  h.bodies.push_back(BoxBody(10, 1, 0.5, 0.0, 1.0));
+  sk::StripGeometryOptions o;
+  o.sections = 10;
+  o.panels = 14;
+  const auto a = sk::StripKernelGeometry(h, o, 5.0, 1025.0, 9.81);
+  o.spacing.end_spacing = 0.08;
+  const auto b = sk::StripKernelGeometry(h, o, 5.0, 1025.0, 9.81);
+  const auto& pa = a.panels[5], &pb = b.panels[5];
+  REQUIRE(pa.size() == 14);
+  REQUIRE(pb.size() == 14);
+  CHECK(pb.front().Length() < pa.front().Length());
+  CHECK(pb.front().z1 == 0.0);  // still ending at the waterline
+  o.spacing.end_spacing = 0.0;
+  std::string err;
+  CHECK_FALSE(o.IsValid(&err));
+  CHECK(err.find("end_spacing") != std::string::npos);
+}
