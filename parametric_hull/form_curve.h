@@ -56,6 +56,6 @@ FormCurve SolveFormCurveAtMidship(double end_value, double area, double centroid
 
 /// Width of the score band over which SolveFormCurveAtMidship blends near-best members (in the score's units:
 /// a section area coefficient for the generator, the peak / midship area for the default score).
-constexpr double kCurveScoreBand = 0.004;
+constexpr double kCurveScoreBand = 0.002;
 
 }  // namespace hullopt::hull
