@@ -10,6 +10,11 @@
 namespace hullopt::hull {
 
 double FormCurve::operator()(double xi) const {
+  if (!members.empty()) {
+    double f = 0.0;
+    for (size_t i = 0; i < members.size(); ++i) f += weights[i] * members[i](xi);
+    return f;
+  }
   if (xi >= xi_peak) {
     const double u = xi_peak < 1.0 ? std::min(1.0, (xi - xi_peak) / (1.0 - xi_peak)) : 0.0;
     return peak * (1.0 - std::pow(u, exponent));
@@ -19,11 +24,21 @@ double FormCurve::operator()(double xi) const {
 }
 
 double FormCurve::Area() const {
+  if (!members.empty()) {
+    double a = 0.0;
+    for (size_t i = 0; i < members.size(); ++i) a += weights[i] * members[i].Area();
+    return a;
+  }
   const double q = exponent, p = exponent * run_ratio, m = xi_peak, r = aft_ratio;
   return peak * ((1.0 - m) * q / (q + 1.0) + m * (1.0 - (1.0 - r) / (p + 1.0)));
 }
 
 double FormCurve::Moment() const {
+  if (!members.empty()) {
+    double m = 0.0;
+    for (size_t i = 0; i < members.size(); ++i) m += weights[i] * members[i].Moment();
+    return m;
+  }
   const double q = exponent, p = exponent * run_ratio, m = xi_peak, r = aft_ratio;
   // ∫_0^1 u (1-u^q) du = 1/2 - 1/(q+2); ∫_0^1 (1-v)(1-(1-r)v^p) dv = 1/2 - (1-r)(1/(p+1) - 1/(p+2)).
   const double fore = (1.0 - m) * (m * q / (q + 1.0) + (1.0 - m) * (0.5 - 1.0 / (q + 2.0)));
@@ -87,19 +102,48 @@ bool Newton(const Maker& make, const Residual& res, double k, double* xi, double
   return Eval(make, res, *xi, *lq, k, &r) && r.norm() < kSolveTol;
 }
 
+// The member of run ratio k nearest the start (xi, lq), by Newton; false if it does not converge.
+template <class Maker, class Residual>
+bool SolveMember(const Maker& make, const Residual& res, double k, double xi, double lq, FormCurve* out) {
+  return Newton(make, res, k, &xi, &lq) && make(xi, lq, k, out);
+}
+
+// The weighted blend of `members` (one member: that member itself).
+FormCurve Blend(std::vector<FormCurve> members, std::vector<double> weights) {
+  if (members.size() == 1) return members[0];
+  FormCurve b;
+  b.peak = 0.0;
+  for (size_t i = 0; i < members.size(); ++i) b.peak += weights[i] * members[i].peak;
+  b.xi_peak = members[0].xi_peak;
+  b.aft_ratio = members[0].aft_ratio;
+  b.exponent = members[0].exponent;
+  b.run_ratio = members[0].run_ratio;
+  b.members = std::move(members);
+  b.weights = std::move(weights);
+  return b;
+}
+
 // Solves for the curve. Without a usable warm start, tries the run/entrance ratios in turn: the first that
 // solves (evenest exponents) if there is no score, else the first with a score <= good_enough or else the
-// one with the lowest score.
+// blend of the lowest-scoring ones (form_curve.h, SolveFormCurveAtMidship). A warm start is re-solved member
+// by member at its own run ratios and keeps its weights.
 template <class Maker, class Residual>
 bool Solve(const Maker& make, const Residual& res, const FormCurve* warm, const CurveScore* score,
            double good_enough, FormCurve* out) {
   const bool lowest_peak = score != nullptr;
   if (warm) {
-    double xi = warm->xi_peak, lq = std::log(warm->exponent);
-    if (Newton(make, res, warm->run_ratio, &xi, &lq)) return make(xi, lq, warm->run_ratio, out);
+    const std::vector<FormCurve> start = warm->members.empty() ? std::vector<FormCurve>{*warm} : warm->members;
+    std::vector<FormCurve> solved(start.size());
+    bool all = true;
+    for (size_t i = 0; i < start.size() && all; ++i)
+      all = SolveMember(make, res, start[i].run_ratio, start[i].xi_peak, std::log(start[i].exponent), &solved[i]);
+    if (all) {
+      *out = Blend(std::move(solved), warm->members.empty() ? std::vector<double>{1.0} : warm->weights);
+      return true;
+    }
   }
-  bool found = false;
-  double best_score = INFINITY;
+  std::vector<FormCurve> candidates;
+  std::vector<double> scores;
   for (double k : kRunRatios) {
     double best = INFINITY, bx = 0.5, bl = 0.0;
     Eigen::Vector2d r;
@@ -121,15 +165,29 @@ bool Solve(const Maker& make, const Residual& res, const FormCurve* warm, const 
         return true;
       }
       const double sc = (*score)(c);
-      if (!found || sc < best_score - 1e-12) {
+      if (sc <= good_enough) {  // evenest curve that is comfortably feasible
         *out = c;
-        best_score = sc;
+        return true;
       }
-      found = true;
-      if (sc <= good_enough) return true;  // evenest curve that is comfortably feasible
+      candidates.push_back(c);
+      scores.push_back(sc);
     }
   }
-  return found;
+  if (candidates.empty()) return false;
+  const double s_min = *std::min_element(scores.begin(), scores.end());
+  std::vector<FormCurve> members;
+  std::vector<double> weights;
+  double total = 0.0;
+  for (size_t i = 0; i < candidates.size(); ++i) {
+    const double w = 1.0 - (scores[i] - s_min) / kCurveScoreBand;
+    if (w <= 0.0) continue;
+    members.push_back(candidates[i]);
+    weights.push_back(w);
+    total += w;
+  }
+  for (double& w : weights) w /= total;
+  *out = Blend(std::move(members), std::move(weights));
+  return true;
 }
 
 [[noreturn]] void Refuse(const std::string& what, double area, double centroid, const std::string& hint) {

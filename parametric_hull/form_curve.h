@@ -9,6 +9,7 @@
 // (parametric_hull/hull_generator.h)', step 1: form parameters with a power-law basis).
 #include <functional>
 #include <string>
+#include <vector>
 
 namespace hullopt::hull {
 
@@ -18,6 +19,11 @@ struct FormCurve {
   double aft_ratio = 0.0;  ///< r = f(0)/peak
   double exponent = 2.0;   ///< q, entrance exponent (> 0)
   double run_ratio = 1.0;  ///< k = p/q, run exponent over entrance exponent
+  /// A blend of family members (empty: this curve is the single member above): f = Σ w_i f_i with weights
+  /// summing to 1. Area and moment are linear in f, so a blend of curves that all meet the same area, centroid
+  /// and end values meets them too. `peak` is then Σ w_i peak_i, an upper bound of the blend's maximum.
+  std::vector<FormCurve> members;
+  std::vector<double> weights;
 
   double operator()(double xi) const;
   double Area() const;    ///< ∫_0^1 f dξ
@@ -37,9 +43,19 @@ using CurveScore = std::function<double(const FormCurve&)>;
 /// Curve normalised at midships, f(0.5) = 1 (sectional area curve over the midship area: area Cp, centroid
 /// 0.5 + LCB/100, f(0) the transom area ratio). The peak may exceed 1 when the area lies far aft. Among the
 /// family members that meet the targets (run/entrance ratios tried evenest first) the first with a score
-/// <= good_enough is taken, else the one with the lowest score (default score: the peak).
+/// <= good_enough is taken, else the lowest-scoring ones (default score: the peak) are blended: every member
+/// with a score s_i < s_min + kCurveScoreBand gets the weight max(0, 1 - (s_i - s_min)/kCurveScoreBand),
+/// normalised. The weights are continuous in the scores, so the curve does not jump where two run ratios
+/// swap places as the best (a lone best member, more than the band ahead, is returned as it is). The blend's
+/// score is at most s_min + kCurveScoreBand for a score that is a maximum over ξ of a quantity linear in f
+/// (the generator's fullest-section score). A warm start that is a blend keeps its weights and re-solves its
+/// members.
 FormCurve SolveFormCurveAtMidship(double end_value, double area, double centroid, const std::string& what,
                                   const FormCurve* warm_start = nullptr, const CurveScore& score = nullptr,
                                   double good_enough = 0.0);
+
+/// Width of the score band over which SolveFormCurveAtMidship blends near-best members (in the score's units:
+/// a section area coefficient for the generator, the peak / midship area for the default score).
+constexpr double kCurveScoreBand = 0.002;
 
 }  // namespace hullopt::hull

@@ -161,14 +161,14 @@ Demihull BuildBody(const BodySpec& b, CurveCache* cache) {
                                      : b.transom_immersion * b.transom_beam * sigma_ref(0.0) / b.Cm;
   // Choose the area curve whose fullest section relative to its waterline breadth is least full (a Cm/w is
   // the area coefficient of a full-draught section; families reach at most 0.98 to 1), for SWATH the lowest
-  // peak.
+  // peak. The curve's peak is sampled too when it lies in the sampled range: with an exponent below 1 the
+  // curve falls from it with infinite slope, so a fixed sample just beside a moving peak would make the score
+  // (and the choice of curve, form_curve.h) change by per cent for a 1e-5 shift of the peak.
   const CurveScore sac_score = [&](const FormCurve& c) {
     if (swath) return c.peak;
-    double worst = 0.0;
-    for (int i = 0; i < 40; ++i) {
-      const double xi = 0.9 * i / 39.0;
-      worst = std::max(worst, c(xi) * b.Cm / std::max(1e-9, wp(xi)));
-    }
+    const auto ratio = [&](double xi) { return c(xi) * b.Cm / std::max(1e-9, wp(xi)); };
+    double worst = c.xi_peak <= 0.9 ? ratio(c.xi_peak) : 0.0;
+    for (int i = 0; i < 40; ++i) worst = std::max(worst, ratio(0.9 * i / 39.0));
     return worst;
   };
   const FormCurve sac = SolveFormCurveAtMidship(

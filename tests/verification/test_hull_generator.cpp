@@ -67,7 +67,20 @@ TEST_CASE("form curve closed-form area and moment agree with quadrature", "[gene
   // Independent check of the closed forms: composite midpoint rule with 200000 panels (error ~1e-9 even at
   // the kink of the peak).
   constexpr double kQuadratureTol = 1e-6;
-  for (const FormCurve c : {FormCurve{0.4, 1.2, 0.3, 2.5, 0.7}, FormCurve{0.7, 1.0, 0.0, 0.6, 3.0}}) {
+  const auto curve = [](double xi_peak, double peak, double aft_ratio, double exponent, double run_ratio) {
+    FormCurve c;
+    c.xi_peak = xi_peak;
+    c.peak = peak;
+    c.aft_ratio = aft_ratio;
+    c.exponent = exponent;
+    c.run_ratio = run_ratio;
+    return c;
+  };
+  const FormCurve c1 = curve(0.4, 1.2, 0.3, 2.5, 0.7), c2 = curve(0.7, 1.0, 0.0, 0.6, 3.0);
+  FormCurve blend;  // a blend of the two, weights 0.3 / 0.7
+  blend.members = {c1, c2};
+  blend.weights = {0.3, 0.7};
+  for (const FormCurve& c : {c1, c2, blend}) {
     const int n = 200000;
     double a = 0, m = 0;
     for (int i = 0; i < n; ++i) {
