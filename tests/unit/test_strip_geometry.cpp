@@ -23,6 +23,15 @@ hull::Demihull BoxBody(double L, double B, double T, double y_centre, double dec
   for (int i = 0; i <= 10; ++i) b.stations.push_back({L * i / 10.0, {0.0, B / 2, B / 2}, {0.0, 0.0, deck}});
   return b;
 }
+// Box monohull 10 × 1 × 0.5 m with 0.5 m freeboard.
+hull::HullForm BoxMonohull() {
+  hull::HullForm h;
+  h.type = "monohull";
+  h.draught_m = 0.5;
+  h.length_m = 10;
+  h.bodies.push_back(BoxBody(10, 1, 0.5, 0.0, 1.0));
+  return h;
+}
 }  // namespace
 
 TEST_CASE("strip geometry of a catamaran box: stations, panels and waterplane", "[strip_geometry]") {
@@ -114,11 +123,7 @@ TEST_CASE("face-layout force stencil: the hull sum telescopes to the transom and
 }
 
 TEST_CASE("zero kernel on a real geometry: static limit", "[strip_geometry][limits]") {
-  hull::HullForm h;
-  h.type = "monohull";
-  h.draught_m = 0.5;
-  h.length_m = 10;
-  h.bodies.push_back(BoxBody(10, 1, 0.5, 0.0, 1.0));
+  const hull::HullForm h = BoxMonohull();
   sk::StripGeometryOptions o;
   const auto k = sk::StripKernelGeometry(h, o, 7.9, 1025.0, 9.81);
   hull::MassProperties mass{1025.0 * 10 * 1 * 0.5, 5.0, 2.5, 0.0};
@@ -190,11 +195,7 @@ TEST_CASE("demihulls far apart: with and without interaction agree", "[strip_geo
 TEST_CASE("strip geometry: the panel spacing option reaches the sections", "[strip_geometry]") {
   // A smaller end_spacing gives a shorter waterline panel (the panels share ∫ ds/h equally and h is smallest at
   // the waterline and the corners; with the count fixed, only the order is certain, not the ratio).
-  hull::HullForm h;
-  h.type = "monohull";
-  h.draught_m = 0.5;
-  h.length_m = 10;
-  h.bodies.push_back(BoxBody(10, 1, 0.5, 0.0, 1.0));
+  const hull::HullForm h = BoxMonohull();
   sk::StripGeometryOptions o;
   o.sections = 10;
   o.panels = 14;
