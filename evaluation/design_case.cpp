@@ -107,7 +107,7 @@ std::string SeaFrequencyAdvice(const DesignCase& d, const std::string& config_fi
 
 sk::CoefficientTable ComputeDesignCoefficients(const DesignCase& d, const std::vector<double>& omega_rad_s) {
   try {
-    return sk::ComputeCoefficients(d.hull, d.mass, d.speed_m_s, d.water.rho_kg_m3, d.water.g_m_s2, omega_rad_s,
+    return sk::ComputeCoefficients(d.running_hull, d.mass, d.speed_m_s, d.water.rho_kg_m3, d.water.g_m_s2, omega_rad_s,
                                    SolverOptions(d, d.solver.cs()), sk::TransientGreenKernelBuilder(d.solver.sectional_force));
   } catch (const std::domain_error& e) {
     throw InputError("design '" + d.name + "': cannot compute coefficients: " + e.what());

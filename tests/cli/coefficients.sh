@@ -36,8 +36,8 @@ case "$header" in
   *) fail "coefficients.csv header: $header" ;;
 esac
 grep -qi nan "$tmp/c/coefficients.csv" && fail "NaN in coefficients.csv"
-"$bin" rao "$tmp/ok.yaml" --out "$tmp/r" > /dev/null || fail "rao refused the same config"
-/usr/bin/python3 - "$tmp/c/coefficients.csv" "$tmp/r/rao.csv" <<'PY' || fail "coefficients do not reproduce rao.csv"
+reproduces() {  # $1: coefficients.csv, $2: rao.csv of the same config
+/usr/bin/python3 - "$1" "$2" <<'PY'
 import csv, math, re, sys
 def rows(p):
     lines = [l for l in open(p) if not l.startswith('#')]
@@ -63,6 +63,23 @@ for c, r in zip(rows(sys.argv[1]), rows(sys.argv[2])):
         ref = float(r[amp]) * complex(math.cos(math.radians(float(r[ph]))), math.sin(math.radians(float(r[ph]))))
         if abs(x - ref) > tol * abs(ref):
             sys.exit(f"omega_e {w}: {amp} {abs(x)} vs rao.csv {abs(ref)}")
+PY
+}
+"$bin" rao "$tmp/ok.yaml" --out "$tmp/r" > /dev/null || fail "rao refused the same config"
+reproduces "$tmp/c/coefficients.csv" "$tmp/r/rao.csv" || fail "coefficients do not reproduce rao.csv"
+# At a running attitude the coefficients are those of the trimmed hull, as the RAOs are.
+sed 's/spacing_m: 0.70 }/spacing_m: 0.70, attitude: { sinkage_m: -0.00257, trim_deg: 1.35 } }/' "$tmp/ok.yaml" > "$tmp/att.yaml"
+grep -q attitude "$tmp/att.yaml" || fail "test set-up: no attitude in att.yaml"
+"$bin" coefficients "$tmp/att.yaml" --out "$tmp/ca" > /dev/null || fail "attitude config refused"
+"$bin" rao "$tmp/att.yaml" --out "$tmp/ra" > /dev/null || fail "rao refused the attitude config"
+reproduces "$tmp/ca/coefficients.csv" "$tmp/ra/rao.csv" || fail "coefficients at the attitude do not reproduce its rao.csv"
+/usr/bin/python3 - "$tmp/ok.yaml" "$tmp/c/coefficients.csv" "$tmp/ca/coefficients.csv" <<'PY' || fail "the attitude does not change the coefficients"
+import csv, sys
+rows = lambda p: list(csv.DictReader(l for l in open(p) if not l.startswith('#')))
+b0 = [float(r['B33_kg_per_s']) for r in rows(sys.argv[2])]
+b1 = [float(r['B33_kg_per_s']) for r in rows(sys.argv[3])]
+# 1.35 deg of trim on a 0.15 m draught moves the transom 35 mm down: B33 changes by far more than 1 %.
+sys.exit(0 if all(abs(a - b) > 0.01 * abs(a) for a, b in zip(b0, b1)) else f"B33 {b0} vs {b1}")
 PY
 
 expect_error() {  # $1: name, $2: config text, $3: text the message must contain

@@ -2,7 +2,8 @@
 // heave and pitch coefficients and restrained-model wave loads at Fn 0.30, 0.45, 0.60, 0.75 (zero trim and
 // sinkage), for the time-domain strip method (default 40 × 14, cell faces, Cs 0.024, both demihulls) and for
 // strip theory (`strip_theory_stf`). Prints per speed and coefficient the mean error, the error of B33 and |F3|
-// at the heave resonance, and at Fn 0.75 the decomposition: each measured link substituted alone into the
+// at the heave resonance (at Fn 0.75 also at the running attitude, hull and measurement), and at Fn 0.75 the
+// decomposition: each measured link substituted alone into the
 // computed equations of motion and where it moves the heave peak. Writes the comparison plots to the build
 // folder (docs/figures/coefficients_delft372_*.svg are copies). Tables and findings: docs/coefficients.md.
 //
@@ -20,6 +21,7 @@
 #include "io/coefficients_plot.h"
 #include "io/measured_coefficients_csv.h"
 #include "optimizer/rao_peak.h"
+#include "parametric_hull/running_attitude.h"
 #include "seakeeping/motions/encounter_frequency.h"
 #include "seakeeping/motions/rao_solver.h"
 #include "support/delft372_hull.h"
@@ -96,9 +98,22 @@ Measured ReadMeasured() {
           io::ReadRestrainedWaveLoadCsv(d + "delft372_restrained_wave_loads.csv")};
 }
 
-sk::CoefficientTable Compute(sk::RaoSolverOptions::Method m, double U, const std::vector<double>& omega) {
-  return sk::ComputeCoefficients(hullopt::testing::Delft372Hull(HULLOPT_SOURCE_DIR), hullopt::testing::Delft372Mass(), U,
-                                 kRho, kG, omega, hullopt::testing::Delft372SolverOptions(m), sk::TransientGreenKernelBuilder());
+// The model's calm-water running attitude at Fn 0.748 (data/delft372/delft372_running_attitude.csv: sinkage
+// 2.57 mm up at the CG, trim 1.35 deg bow up), the condition of the forced tests labelled Fn0.75_trim_sinkage.
+hullopt::hull::RunningAttitude Fn075Attitude() {
+  hullopt::hull::RunningAttitude a;
+  a.sinkage_m = -0.00257;
+  a.trim_deg = 1.35;
+  a.pivot_x_m = hullopt::testing::Delft372Mass().lcg_m_from_ap;
+  return a;
+}
+
+sk::CoefficientTable Compute(sk::RaoSolverOptions::Method m, double U, const std::vector<double>& omega,
+                             bool running_attitude = false) {
+  auto hull = hullopt::testing::Delft372Hull(HULLOPT_SOURCE_DIR);
+  if (running_attitude) hull = hullopt::hull::ApplyRunningAttitude(hull, Fn075Attitude());
+  return sk::ComputeCoefficients(hull, hullopt::testing::Delft372Mass(), U, kRho, kG, omega,
+                                 hullopt::testing::Delft372SolverOptions(m), sk::TransientGreenKernelBuilder());
 }
 
 // Encounter frequencies ω_e √(L/g) = 2.5 … 9.2 (the measured range), count points (strip theory solves every
@@ -158,11 +173,13 @@ TEST_CASE("Delft 372 coefficients and wave loads against the forced and restrain
     std::printf("| Fn | A33 | B33 | A55 | B55 | A35 | A53 | B35 | B53 | abs F3 | abs F5 | w_n sqrt(L/g) | B33 at w_n | abs F3 at w_n |\n");
     for (double Fn : {0.30, 0.45, 0.60, 0.75}) {
       const double U = Fn * std::sqrt(kG * kL);
-      const auto t = Compute(method, U, SweepOmega(U, stf ? 24 : 61));
+      const auto t0 = Compute(method, U, SweepOmega(U, stf ? 24 : 61));
       const auto m_zero = io::MeasuredPointsForSpeed(meas.heave, meas.pitch, meas.loads, Fn, "zero", U, kG, kL);
       for (const std::string trim : {"zero", "Fn0.75_trim_sinkage"}) {
         if (trim != "zero" && Fn != 0.75) continue;
         const auto m = io::MeasuredPointsForSpeed(meas.heave, meas.pitch, meas.loads, Fn, trim, U, kG, kL);
+        // The running-attitude rows against the hull computed at that attitude.
+        const sk::CoefficientTable t = trim == "zero" ? t0 : Compute(method, U, SweepOmega(U, stf ? 24 : 61), true);
         auto A = [&](int i, int j) { return [&, i, j](double v) { return ComputedAt(t, v, [=](const sk::HeadSeaCoefficients& c) { return c.A(i, j); }); }; };
         auto B = [&](int i, int j) { return [&, i, j](double v) { return ComputedAt(t, v, [=](const sk::HeadSeaCoefficients& c) { return c.B(i, j); }); }; };
         auto F = [&](int i) { return [&, i](double v) { return ComputedAt(t, v, [=](const sk::HeadSeaCoefficients& c) { return std::abs(c.Exciting(i)); }); }; };
@@ -174,17 +191,26 @@ TEST_CASE("Delft 372 coefficients and wave loads against the forced and restrain
         const double wn = MeasuredHeaveResonance(m);
         const double b33m = Curve(m.heave_x, m.B33).At(wn), f3m = m.load_x.empty() ? NAN : Curve(m.load_x, m.F3_amp).At(wn);
         const double b33c = B(0, 0)(wn), f3c = F(0)(wn);
-        std::printf("| %.2f%s |", Fn, trim == "zero" ? "" : " (running attitude; computed at zero)");
+        std::printf("| %.2f%s |", Fn, trim == "zero" ? "" : " (running attitude, computed at it)");
         for (const auto& x : s) std::printf(" %+.0f / %.0f (%d) |", x.bias_pct, x.rms_pct, x.n);
         std::printf(" %.2f | %.0f vs %.0f (%+.1f%%) | %.0f vs %.0f (%+.1f%%) |\n", wn, b33c, b33m,
                     100 * (b33c / b33m - 1), f3c, f3m, 100 * (f3c / f3m - 1));
         for (int i = 0; i < (trim == "zero" ? 10 : 8); ++i) CHECK(s[i].n > 0);  // measured points for every link
+        if (trim != "zero") {
+          char name[128];
+          std::snprintf(name, sizeof name, "%s/coefficients_delft372_fn075_attitude_%s.svg", HULLOPT_BINARY_DIR,
+                        stf ? "stf" : "td");
+          auto ma = m;
+          io::WriteSvg(io::CoefficientsFigure({t}, {stf ? "strip theory (STF)" : "time-domain strip 40 x 14"}, kL,
+                                              "Delft 372, Fn 0.75, running trim and sinkage, Cs 0.024", &ma),
+                       name);
+        }
       }
       char name[128];
       std::snprintf(name, sizeof name, "%s/coefficients_delft372_fn%03d_%s.svg", HULLOPT_BINARY_DIR,
                     static_cast<int>(std::lround(Fn * 100)), stf ? "stf" : "td");
       auto mm = m_zero;
-      io::WriteSvg(io::CoefficientsFigure({t}, {stf ? "strip theory (STF)" : "time-domain strip 40 x 14"}, kL,
+      io::WriteSvg(io::CoefficientsFigure({t0}, {stf ? "strip theory (STF)" : "time-domain strip 40 x 14"}, kL,
                                           "Delft 372, Fn " + std::to_string(Fn).substr(0, 4) +
                                               ", zero trim and sinkage, Cs 0.024",
                                           &mm),
@@ -287,6 +313,33 @@ TEST_CASE("Delft 372 Fn 0.75: which measured link moves the heave peak", "[valid
         p.push_back(std::abs(x[1]));
       }
       const auto hp = hullopt::opt::InterpolatedPeak(lam, h), pp = hullopt::opt::InterpolatedPeak(lam, p);
+      if (links == 0) base = hp.value;
+      std::printf("| %s | %.3f | %.2f%s | %+.3f | %.3f | %.2f%s |\n", label.c_str(), hp.value, hp.x,
+                  hp.at_edge ? " (edge)" : "", hp.value - base, pp.value, pp.x, pp.at_edge ? " (edge)" : "");
+    }
+  }
+  {
+    // The condition of the RAO tests: the hull computed at the running attitude, the running-attitude forced
+    // points substituted (λ/L 1.30–1.98, where the attitude's pitch tests reach), the loads computed.
+    const auto t = Compute(sk::RaoSolverOptions::Method::kTimeDomainStrip, U, omega, true);
+    std::printf("\ntime-domain strip at the running attitude, Fn 0.75: running-attitude links substituted (lambda/L "
+                ">= 1.3)\n| substituted | heave peak | at lambda/L | change | pitch peak | at lambda/L |\n");
+    const std::vector<std::pair<std::string, int>> cases = {
+        {"none (computed at the attitude)", 0}, {"A33", kA33}, {"B33", kB33}, {"A55", kA55}, {"B55", kB55},
+        {"A35, A53, B35, B53", kCouple}, {"B33 + couplings", kB33 | kCouple},
+        {"B33 + B55 + couplings", kB33 | kB55 | kCouple}, {"all coefficients", kA33 | kB33 | kA55 | kB55 | kCouple},
+        {"all coefficients and the (zero-attitude) loads", kAll}};
+    double base = 0;
+    for (const auto& [label, links] : cases) {
+      std::vector<double> h, p, l;
+      for (std::size_t f = 0; f < omega.size(); ++f)
+        if (lam[f] >= 1.3) {
+          const auto x = Substitute(t.rows[f], links, attitude).Solve();
+          h.push_back(std::abs(x[0]));
+          p.push_back(std::abs(x[1]));
+          l.push_back(lam[f]);
+        }
+      const auto hp = hullopt::opt::InterpolatedPeak(l, h), pp = hullopt::opt::InterpolatedPeak(l, p);
       if (links == 0) base = hp.value;
       std::printf("| %s | %.3f | %.2f%s | %+.3f | %.3f | %.2f%s |\n", label.c_str(), hp.value, hp.x,
                   hp.at_edge ? " (edge)" : "", hp.value - base, pp.value, pp.x, pp.at_edge ? " (edge)" : "");
