@@ -67,24 +67,32 @@ std::string DefaultName(const std::string& csv) {
 struct DesignInput {
   io::EvaluatedDesign design;
   std::string where;  // config location for messages
-  std::optional<eval::DesignCase> computed;  // the design when its RAOs were computed here (for the resolution check)
+  std::optional<eval::DesignCase> computed;  // the design when its RAOs are computed here (for the resolution check)
+  std::vector<double> omega_rad_s;            // its wave frequencies
   double cs_override = -1.0;
 };
 
-// A design computed by the strip solver from its own config (root = that config's map).
-void ComputeDesign(io::YamlMap& root, const std::string& file, DesignInput* in, double cs_override) {
+// A design to be computed by the strip solver from its own config (root = that config's map): read and
+// checked now, its RAOs computed by ComputePendingRaos once the whole evaluation config has been read, so that
+// an error anywhere in it is reported before the strip work.
+void LoadComputedDesign(io::YamlMap& root, const std::string& file, DesignInput* in, double cs_override) {
   const eval::DesignCase dc = io::LoadDesignCase(root, file, in->design.name);
   if (root.Has("compare")) root.Skip("compare");  // measured data drawn by rao/coefficients, not used here
   root.Finish();
-  const std::vector<double> omega = eval::SeaFrequencies(dc);
+  in->omega_rad_s = eval::SeaFrequencies(dc);
   CheckRunCost("evaluate: design '" + in->design.name + "'",
-               io::StripWorkFromResolved(root.resolved(), static_cast<long>(omega.size())));
-  in->design.rao = eval::ComputeDesignRaos(dc, omega, cs_override);
+               io::StripWorkFromResolved(root.resolved(), static_cast<long>(in->omega_rad_s.size())));
   in->computed = dc;
   in->cs_override = cs_override;
+  in->design.rao.speed_m_s = dc.speed_m_s;
   in->design.frequency_advice = eval::SeaFrequencyAdvice(dc, file);
   in->design.hull = dc.Extent();
   for (const auto& [k, v] : dc.Parameters()) in->design.parameters.emplace(k, v);
+}
+
+void ComputePendingRaos(std::vector<DesignInput>* inputs) {
+  for (auto& in : *inputs)
+    if (in.computed) in.design.rao = eval::ComputeDesignRaos(*in.computed, in.omega_rad_s, in.cs_override);
 }
 
 DesignInput ReadDesign(io::YamlMap& m, double g, bool single) {
@@ -100,7 +108,7 @@ DesignInput ReadDesign(io::YamlMap& m, double g, bool single) {
     for (const auto& key : params.Keys()) in.design.parameters[key] = params.Number(key);
     params.Finish();
     io::YamlMap design_root = io::YamlMap::LoadFile(file);
-    ComputeDesign(design_root, file, &in, cs);
+    LoadComputedDesign(design_root, file, &in, cs);
     if (std::abs(g - design_root.resolved()["water"]["g_m_s2"].as<double>(g)) > 1e-9)
       throw io::InputError(in.where + ": the design's g differs from the evaluation's water.g_m_s2");
     return in;
@@ -171,9 +179,9 @@ void Run(const std::string& config_file, const std::string& out_dir) {
     // Recorded in config.resolved.yaml, so that a re-run keeps the design's name.
     in.design.name = io::ParseDesignName(root, std::filesystem::path(config_file).stem().string());
     const eval::DesignCase dc = io::LoadDesignCase(root, config_file, in.design.name);
-    const std::vector<double> omega = eval::SeaFrequencies(dc);
-    CheckRunCost("evaluate", io::StripWorkFromResolved(root.resolved(), static_cast<long>(omega.size())));
-    in.design.rao = eval::ComputeDesignRaos(dc, omega);
+    in.omega_rad_s = eval::SeaFrequencies(dc);
+    CheckRunCost("evaluate", io::StripWorkFromResolved(root.resolved(), static_cast<long>(in.omega_rad_s.size())));
+    in.design.rao.speed_m_s = dc.speed_m_s;
     in.design.frequency_advice = eval::SeaFrequencyAdvice(dc, config_file);
     in.design.hull = dc.Extent();
     in.design.parameters = dc.Parameters();
@@ -225,6 +233,7 @@ void Run(const std::string& config_file, const std::string& out_dir) {
         throw io::InputError(positions.Where("points") + ": design '" + in.design.name + "': " + error);
     }
   }
+  ComputePendingRaos(&inputs);  // the strip work, once everything has been read and checked
 
   std::vector<io::EvaluatedDesign> designs;
   const std::vector<sk::WaveSpectrum> spectra = sk::BuildSpectra(seas);

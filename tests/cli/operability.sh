@@ -80,5 +80,21 @@ bad nonnumber "is not a number" 'Hs_m\\Tz_s,7.5\n3.0,abc\n'
 bad position "position" 'Hs_m\\Tz_s,7.5\n3.0,1\n' '[ { msi_max_pct: 20, position: galley } ]'
 bad two_kinds "exactly one" 'Hs_m\\Tz_s,7.5\n3.0,1\n' '[ { msi_max_pct: 20, rms_accel_max_g: 0.1 } ]'
 bad nordforsk "nordforsk" 'Hs_m\\Tz_s,7.5\n3.0,1\n' '[ { nordforsk: sleeping } ]'
+# A bad scatter file is reported before the strip work: a design computed at 200 x 60 (about 2.7 min of kernel
+# on one core) with a missing scatter file must fail at once (60 s leaves a margin of 2.7 even on a slow machine).
+cat > "$T/heavy.yaml" <<YAML
+hull: { offsets_csv: $PWD/data/delft372/delft372_offsets.csv, draught_m: 0.15, length_m: 3.0, hulls: 2, spacing_m: 0.70 }
+mass: { mass_kg: 87.07, lcg_m_from_ap: 1.41, kyy_m: 0.782 }
+speed: { Fn: 0.75 }
+water: { rho_kg_m3: 1000 }
+solver: { sections: 200, panels: 60 }
+seas: [ { spectrum: jonswap, Hs_m: 0.1, Tz_s: 2.5 } ]
+operability: { scatter_csv: $T/nowhere.csv, criteria: [ { msi_max_pct: 20 } ] }
+report: { plots: false }
+YAML
+timeout 60 "$BIN" evaluate "$T/heavy.yaml" --out "$T/heavy" > /dev/null 2> "$T/heavy.err"
+rc=$?
+[ $rc -eq 1 ] || { echo "FAIL heavy design with a missing scatter file: exit code $rc (want 1 at once; 124 = still computing)"; fail=1; }
+grep -q "operability.scatter_csv" "$T/heavy.err" || { echo "FAIL heavy: message lacks the key: $(cat "$T/heavy.err")"; fail=1; }
 [ $fail -eq 0 ] && echo "operability CLI: all checks passed"
 exit $fail
