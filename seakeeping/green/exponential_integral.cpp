@@ -3,6 +3,8 @@
 #include <cmath>
 #include <limits>
 
+#include "seakeeping/green/complex_log.h"
+
 namespace hullopt::sk {
 namespace {
 
@@ -69,13 +71,6 @@ std::complex<double> Recip(std::complex<double> v) {
   return {v.real() * inv, -v.imag() * inv};
 }
 
-// ln z as (ln|z|, arg z): ln|z| = ½ ln(x² + y²) (absolute error a few 1e-16, all the callers need: ln z is
-// added to O(1) terms); std::log's extra care near |z| = 1 costs more than the rest of the series.
-std::complex<double> Log(std::complex<double> z) {
-  const double n = std::norm(z);
-  if (!(n > 1e-290) || !(n < 1e290)) return std::log(z);
-  return {0.5 * std::log(n), std::atan2(z.imag(), z.real())};
-}
 
 // Where the power series is used: |z| <= 5, or close to the negative real axis (Re z < −2|Im z|) for |z| <
 // 40, where the continued fraction converges slowly and the series has no cancellation.
@@ -138,14 +133,14 @@ std::complex<double> Asymptotic(std::complex<double> z) {
 
 std::complex<double> ScaledExpIntE1(std::complex<double> z) {
   if (z == std::complex<double>(0.0, 0.0)) return {std::numeric_limits<double>::infinity(), 0.0};
-  if (UseSeries(z)) return Mul(std::exp(z), -kEulerGamma - Log(z) + SeriesTail(z));
+  if (UseSeries(z)) return Mul(std::exp(z), -kEulerGamma - LogWithoutHypot(z) + SeriesTail(z));
   if (UseAsymptotic(z)) return Asymptotic(z);
   return ContinuedFraction(z);
 }
 
 std::complex<double> ExpIntE1(std::complex<double> z) {
   if (z == std::complex<double>(0.0, 0.0)) return {std::numeric_limits<double>::infinity(), 0.0};
-  if (UseSeries(z)) return -kEulerGamma - Log(z) + SeriesTail(z);
+  if (UseSeries(z)) return -kEulerGamma - LogWithoutHypot(z) + SeriesTail(z);
   return std::exp(-z) * ScaledExpIntE1(z);
 }
 
@@ -154,14 +149,14 @@ ScaledExpIntE1Pair ScaledExpIntE1AndPlusLog(std::complex<double> z, std::complex
   if (Negligible(z, 1e-300)) return {ScaledExpIntE1(z), {-kEulerGamma, 0.0}};
   if (UseSeries(z)) {
     // One exponential, one logarithm and one series for both (the two functions differ by ln z).
-    const std::complex<double> tail = SeriesTail(z), log_z = Log(z);
+    const std::complex<double> tail = SeriesTail(z), log_z = LogWithoutHypot(z);
     const std::complex<double> g = -kEulerGamma + tail;
     // (1 − e^z) ln z → 0 like z ln z; formed directly, its absolute error is ~1e-16 |ln z| (1e-15 at |z| =
     // 1e-7), negligible against the O(1) sum it is added to.
     return {Mul(exp_z, g - log_z), Mul(exp_z, g) + Mul(1.0 - exp_z, log_z)};
   }
   const std::complex<double> scaled = UseAsymptotic(z) ? Asymptotic(z) : ContinuedFraction(z);
-  return {scaled, scaled + Log(z)};
+  return {scaled, scaled + LogWithoutHypot(z)};
 }
 
 ScaledExpIntE1Pair ScaledExpIntE1AndPlusLog(std::complex<double> z) { return ScaledExpIntE1AndPlusLog(z, std::exp(z)); }

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "seakeeping/green/cerf_wrap.h"
+#include "seakeeping/green/complex_log.h"
 #include "seakeeping/green/unit_arctangent.h"
 
 #if defined(__SSE2__)
@@ -313,8 +314,6 @@ cd ErfcFirstQuadrant(cd x) {
   return {er, ei};
 }
 
-// ln x without the hypot of std::log (x != 0).
-cd LogFirstQuadrant(cd x) { return {0.5 * std::log(std::norm(x)), std::atan2(x.imag(), x.real())}; }
 
 void CheckAsymptoticSector(cd x) {
   if (x.imag() > x.real() * (1.0 + 1e-12))
@@ -335,7 +334,7 @@ cd DawsonIntegral(cd x) {
     out = DawsonIntegralTableOnly(x);
   } else {
     CheckAsymptoticSector(x);
-    out = kPhiConstant + 0.5 * LogFirstQuadrant(x) - PhiAlgebraicSeries(x) - kI * (M_PI / 4.0) * ErfcFirstQuadrant(x);
+    out = kPhiConstant + 0.5 * LogWithoutHypot(x) - PhiAlgebraicSeries(x) - kI * (M_PI / 4.0) * ErfcFirstQuadrant(x);
   }
   return ConjIf(conj, out);
 }
