@@ -7,8 +7,9 @@
 // 3. Strip theory at low speed against the 2D section solver: A33 → Σ w a33(ω_e), B33 → Σ w b33,
 //    A55 → Σ w x² a33, A35, A53 → −Σ w x a33 (STF at U → 0), with a33, b33 of each station's section solved
 //    here directly by SolveSectionFrequencyDomain.
-// 4. The time-domain method's heave coefficients at low speed against the same 2D sums (the strips are
-//    nearly periodic there).
+// 4. The time-domain method at low speed against the same 2D sections: continuous STF plus the first-order
+//    term of the free-surface condition's cross term −2iω_e U ∂φ/∂x, which the strips keep (they satisfy
+//    φ_tt + g φ_z = 0 exactly) and STF drops (docs/coefficients.md, check 4).
 #include <Eigen/Dense>
 #include <catch2/catch.hpp>
 #include <cmath>
@@ -139,6 +140,41 @@ std::array<std::array<cd, 2>, 2> ContinuousStf(const sk::StripKernel& geo, doubl
   }
   return F;
 }
+
+// The first-order correction of the 2D+t strips to continuous STF at low speed. In the ship frame the strip's
+// free-surface condition is (iω_e − U∂x)²φ + gφ_z = 0; STF keeps −ω_e²φ only. To first order in U the cross
+// term −2iω_e U ∂x(Φ v) (Φ the unit-velocity potential of the section at x) changes the sectional momentum
+// Z v by δM = iU [Z_ω v' + ½ (∂x Z_ω) v], Z_ω = ∂Z/∂ω_e at fixed section: the part Φ v' is a shift of the
+// frequency, and by reciprocity the response to Φ_x v is ∫_FS Φ_x Φ = ½ ∂x ∫_FS Φ², i.e. half the x-derivative
+// of Z_ω. With f = −(iω_e − U∂x)M and the section zero at the bow, to first order in U the forces change by
+// δF3j = −iω_e ∫ δM and δF5j = iω_e ∫ x δM (the U-terms of f acting on δM are second order); v_3 = iω_e,
+// v_5 = −iω_e x (the U part of v_5 is second order too). Returns δ moving[i][j] like ContinuousStf.
+std::array<std::array<cd, 2>, 2> StripMemoryTerm(const sk::StripKernel& geo, double lcg, double U, double we,
+                                                  const std::vector<cd>& Zw) {
+  std::array<std::array<cd, 2>, 2> F{};
+  const cd iw(0.0, we);
+  const int N = geo.Steps();
+  const double xT = geo.x_m[N - 1] - lcg;  // the transom face
+  for (int j = 0; j < 2; ++j) {
+    cd I = 0, J0 = 0, J1 = 0;  // ∫ Z_ω v_j, ∫ Z_ω, ∫ x Z_ω
+    for (int n = 0; n < N; ++n) {
+      const double x = geo.x_m[n] - lcg;
+      const cd v = j == 0 ? iw : -iw * x;
+      I += Zw[n] * v * geo.Weight(n);
+      J0 += Zw[n] * geo.Weight(n);
+      J1 += x * Zw[n] * geo.Weight(n);
+    }
+    const cd vT = j == 0 ? iw : -iw * xT;
+    // δM = iU ∂x(Z_ω v): ∫ δM = −iU (Z_ω v)_T, ∫ x δM = −iU [x_T (Z_ω v)_T + ∫ Z_ω v] (the bow term is zero).
+    const cd whole3 = -we * U * Zw[N - 1] * vT, whole5 = we * U * (xT * Zw[N - 1] * vT + I);
+    // δM = iU Z_ω v' (v'_5 = −iω_e): ∫ δM = ω_e U ∫ Z_ω, ∫ x δM = ω_e U ∫ x Z_ω.
+    const cd shift3 = j == 0 ? cd(0.0) : -iw * we * U * J0, shift5 = j == 0 ? cd(0.0) : iw * we * U * J1;
+    // iU[Z_ω v' + ½(∂x Z_ω) v] = ½ iU ∂x(Z_ω v) + ½ iU Z_ω v'.
+    F[0][j] = 0.5 * (whole3 + shift3);
+    F[1][j] = 0.5 * (whole5 + shift5);
+  }
+  return F;
+}
 }  // namespace
 
 TEST_CASE("strip theory and time-domain coefficients at low speed against 2D sections",
@@ -166,28 +202,43 @@ TEST_CASE("strip theory and time-domain coefficients at low speed against 2D sec
   for (std::size_t f = 0; f < omega.size(); ++f) {
     const double we = stf.rows[f].omega_e_rad_s;
     std::vector<double> a(geo.Steps(), 0.0), b(geo.Steps(), 0.0);
+    std::vector<cd> Zw(geo.Steps(), 0.0);  // ∂Z/∂ω_e by a central difference (±2 %: truncation ~1e-4)
+    const double dw = 0.02 * we;
+    auto Z = [&](const sk::SectionHydrodynamics& h, double w) { return cd(2 * h.a33(), -2 * h.b33() / w); };
     for (int n = 0; n < geo.Steps(); ++n) {
       if (geo.panels[n].empty()) continue;
       const auto h = sk::SolveSectionFrequencyDomain({geo.panels[n]}, we, fo);
       a[n] = 2 * h.a33();  // both demihulls
       b[n] = 2 * h.b33();
+      Zw[n] = (Z(sk::SolveSectionFrequencyDomain({geo.panels[n]}, we + dw, fo), we + dw) -
+               Z(sk::SolveSectionFrequencyDomain({geo.panels[n]}, we - dw, fo), we - dw)) / (2 * dw);
     }
     const auto ref = ContinuousStf(geo, mass.lcg_m_from_ap, U, we, a, b);
+    const auto memory = StripMemoryTerm(geo, mass.lcg_m_from_ap, U, we, Zw);
+    const double tau = U * we / kG;
     // Scales for the tolerances: each coefficient against the size of its row's diagonal.
     for (int i = 0; i < 2; ++i)
       for (int j = 0; j < 2; ++j) {
         const double scale = std::sqrt(std::abs(ref[i][i]) * std::abs(ref[j][j]));
         const cd s = stf.rows[f].moving[i][j], t = td.rows[f].moving[i][j];
-        std::cout << "we " << we << " ij " << i << j << " ref A " << ref[i][j].real() / (we * we) << " B "
-                  << -ref[i][j].imag() / we << " | STF A " << s.real() / (we * we) << " B " << -s.imag() / we
-                  << " | TD A " << t.real() / (we * we) << " B " << -t.imag() / we << "\n";
+        const cd ref_td = ref[i][j] + memory[i][j];
+        const double before = std::abs(t - ref[i][j]) / scale, after = std::abs(t - ref_td) / scale;
+        std::cout << "we " << we << " tau " << tau << " ij " << i << j << " ref A " << ref[i][j].real() / (we * we)
+                  << " B " << -ref[i][j].imag() / we << " | + memory term A " << ref_td.real() / (we * we) << " B "
+                  << -ref_td.imag() / we << " | STF A " << s.real() / (we * we) << " B " << -s.imag() / we
+                  << " | TD A " << t.real() / (we * we) << " B " << -t.imag() / we << " | TD error / scale "
+                  << before << " -> " << after << "\n";
         // STF: the same sections; what differs is the strip grid's difference operator.
         CHECK(std::abs(s - ref[i][j]) <= 0.03 * scale);
-        // TD, heave: its own 2D solver (1–2% from the frequency-domain one at 14 panels) and the strips'
-        // finite age (1.4 to 3.3 encounter periods from bow to midships here). The pitch rows are printed, not
-        // checked: A35 and A53 differ from continuous STF by about +12 and −10 kg m at every frequency (a
-        // finding, docs/coefficients.md).
-        if (i == 0 && j == 0) CHECK(std::abs(t - ref[i][j]) <= 0.06 * scale);
+        // TD against STF plus the strips' first-order term: its own 2D solver (1–2% from the frequency-domain
+        // one at 14 panels), the strips' finite age (1.4 to 3.3 encounter periods from bow to midships here)
+        // and the terms of second order in U (τ = Uω_e/g is 0.25 to 0.58 here: the expansion needs τ < 1/4,
+        // so the check is loosest where τ is largest). Measured 0.4–6.2 % of the scale.
+        constexpr double kStripTol = 0.07;
+        CHECK(after <= kStripTol);
+        // The couplings are where the term matters: without it A35, A53, B35, B53 are 6–14 % of the scale off
+        // (A35 +12, A53 −10 kg m); it must at least halve that error while τ <= 1/3.
+        if (i != j && tau <= 1.0 / 3.0) CHECK(after <= 0.5 * before);
       }
   }
 }
