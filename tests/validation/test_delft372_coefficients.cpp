@@ -191,6 +191,18 @@ TEST_CASE("Delft 372 coefficients and wave loads against the forced and restrain
         const double wn = MeasuredHeaveResonance(m);
         const double b33m = Curve(m.heave_x, m.B33).At(wn), f3m = m.load_x.empty() ? NAN : Curve(m.load_x, m.F3_amp).At(wn);
         const double b33c = B(0, 0)(wn), f3c = F(0)(wn);
+        // The A55 gap as an in-phase stiffness: (A55 measured − computed) ω_e² [N m/rad] at each pitch point.
+        // Roughly constant over frequency where a frequency-independent moment is missing from one side.
+        std::vector<double> stiff;
+        for (std::size_t k = 0; k < m.pitch_x.size(); ++k) {
+          const double c = A(1, 1)(m.pitch_x[k]), w = m.pitch_x[k] / kNondim;
+          if (std::isfinite(c)) stiff.push_back((m.A55[k] - c) * w * w);
+        }
+        std::sort(stiff.begin(), stiff.end());
+        if (!stiff.empty())
+          std::printf("A55 gap x omega_e^2, Fn %.2f %s: %.0f to %.0f N m/rad (median %.0f, %zu points; C55 %.0f)\n", Fn,
+                      trim.c_str(), stiff.front(), stiff.back(), stiff[stiff.size() / 2], stiff.size(),
+                      t.rows[0].restoring[1][1]);
         std::printf("| %.2f%s |", Fn, trim == "zero" ? "" : " (running attitude, computed at it)");
         for (const auto& x : s) std::printf(" %+.0f / %.0f (%d) |", x.bias_pct, x.rms_pct, x.n);
         std::printf(" %.2f | %.0f vs %.0f (%+.1f%%) | %.0f vs %.0f (%+.1f%%) |\n", wn, b33c, b33m,
