@@ -12,8 +12,8 @@
 // 40 × 14 −15.5%.) Checked at 80 × 56; 80 × 28 and the paper's 40 × 14 are reported. Findings
 // (docs/ship-motions.md): the 2D demihull interaction in the strips lowers the peak by 14% (one demihull
 // alone: 2.50), wholly through the memory part of the coupling, which is verified against the
-// frequency-domain pair (verification_td_twin_release); Cs is not the cause (Cs = 0 raises the peak by about
-// 0.1). The paper's written sectional force (pressure form, reported below) gives −9.9% (−11.7% with first-order
+// frequency-domain pair (verification_td_twin_release); Cs is not the cause (Cs = 0 raises the peak by 0.21,
+// to 2.374). The paper's written sectional force (pressure form, reported below) gives −9.9% (−11.7% with first-order
 // panels) but loses the pitch resonance; the default is not switched (docs/ship-motions.md). Nothing was tuned toward the tank.
 #include <catch2/catch.hpp>
 #include <cmath>
