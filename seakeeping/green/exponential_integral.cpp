@@ -71,7 +71,6 @@ std::complex<double> Recip(std::complex<double> v) {
   return {v.real() * inv, -v.imag() * inv};
 }
 
-
 // Where the power series is used: |z| <= 5, or close to the negative real axis (Re z < −2|Im z|) for |z| <
 // 40, where the continued fraction converges slowly and the series has no cancellation.
 bool UseSeries(std::complex<double> z) {
