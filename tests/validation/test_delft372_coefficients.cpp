@@ -277,6 +277,27 @@ TEST_CASE("Delft 372 Fn 0.75: which measured link moves the heave peak", "[valid
     return c;
   };
   const int kAll = kA33 | kB33 | kA55 | kB55 | kCouple | kF3 | kF5;
+  // One table row per case: the heave and pitch peaks over λ/L >= lam_min with the case's links substituted
+  // from q. With raos, the unsubstituted system is checked against the RAO solve (bookkeeping).
+  auto PrintPeaks = [&](const sk::CoefficientTable& t, const std::vector<std::pair<std::string, int>>& cases,
+                        const Links& q, double lam_min, const sk::RaoTable* raos) {
+    double base = 0;
+    for (const auto& [label, links] : cases) {
+      std::vector<double> h, p, l;
+      for (std::size_t f = 0; f < omega.size(); ++f) {
+        if (lam[f] < lam_min) continue;
+        const auto x = Substitute(t.rows[f], links, q).Solve();
+        if (links == 0 && raos) CHECK(std::abs(x[0] - raos->heave[f]) <= 1e-9 * std::abs(raos->heave[f]));
+        h.push_back(std::abs(x[0]));
+        p.push_back(std::abs(x[1]));
+        l.push_back(lam[f]);
+      }
+      const auto hp = hullopt::opt::InterpolatedPeak(l, h), pp = hullopt::opt::InterpolatedPeak(l, p);
+      if (links == 0) base = hp.value;
+      std::printf("| %s | %.3f | %.2f%s | %+.3f | %.3f | %.2f%s |\n", label.c_str(), hp.value, hp.x,
+                  hp.at_edge ? " (edge)" : "", hp.value - base, pp.value, pp.x, pp.at_edge ? " (edge)" : "");
+    }
+  };
   {
     // Consistency of the measured links with the measured RAO, and so of the conventions read into them
     // (coupling signs, phase reference): all measured links at the running attitude with the motion tests'
@@ -313,22 +334,7 @@ TEST_CASE("Delft 372 Fn 0.75: which measured link moves the heave peak", "[valid
         {"|F3| only", kF3amp}, {"|F5| only", kF5amp}, {"A33 + B33", kA33 | kB33},
         {"all coefficients", kA33 | kB33 | kA55 | kB55 | kCouple},
         {"all coefficients and loads", kAll}};
-    double base = 0;
-    for (const auto& [label, links] : cases) {
-      std::vector<double> h, p;
-      for (std::size_t f = 0; f < omega.size(); ++f) {
-        const auto x = Substitute(t.rows[f], links, zero).Solve();
-        if (links == 0 && !stf) {  // bookkeeping: the unsubstituted system is the RAO solve
-          CHECK(std::abs(x[0] - raos.heave[f]) <= 1e-9 * std::abs(raos.heave[f]));
-        }
-        h.push_back(std::abs(x[0]));
-        p.push_back(std::abs(x[1]));
-      }
-      const auto hp = hullopt::opt::InterpolatedPeak(lam, h), pp = hullopt::opt::InterpolatedPeak(lam, p);
-      if (links == 0) base = hp.value;
-      std::printf("| %s | %.3f | %.2f%s | %+.3f | %.3f | %.2f%s |\n", label.c_str(), hp.value, hp.x,
-                  hp.at_edge ? " (edge)" : "", hp.value - base, pp.value, pp.x, pp.at_edge ? " (edge)" : "");
-    }
+    PrintPeaks(t, cases, zero, 0.0, stf ? nullptr : &raos);
   }
   {
     // The condition of the RAO tests: the hull computed at the running attitude, the running-attitude forced
@@ -341,20 +347,6 @@ TEST_CASE("Delft 372 Fn 0.75: which measured link moves the heave peak", "[valid
         {"A35, A53, B35, B53", kCouple}, {"B33 + couplings", kB33 | kCouple},
         {"B33 + B55 + couplings", kB33 | kB55 | kCouple}, {"all coefficients", kA33 | kB33 | kA55 | kB55 | kCouple},
         {"all coefficients and the (zero-attitude) loads", kAll}};
-    double base = 0;
-    for (const auto& [label, links] : cases) {
-      std::vector<double> h, p, l;
-      for (std::size_t f = 0; f < omega.size(); ++f)
-        if (lam[f] >= 1.3) {
-          const auto x = Substitute(t.rows[f], links, attitude).Solve();
-          h.push_back(std::abs(x[0]));
-          p.push_back(std::abs(x[1]));
-          l.push_back(lam[f]);
-        }
-      const auto hp = hullopt::opt::InterpolatedPeak(l, h), pp = hullopt::opt::InterpolatedPeak(l, p);
-      if (links == 0) base = hp.value;
-      std::printf("| %s | %.3f | %.2f%s | %+.3f | %.3f | %.2f%s |\n", label.c_str(), hp.value, hp.x,
-                  hp.at_edge ? " (edge)" : "", hp.value - base, pp.value, pp.x, pp.at_edge ? " (edge)" : "");
-    }
+    PrintPeaks(t, cases, attitude, 1.3, nullptr);
   }
 }
