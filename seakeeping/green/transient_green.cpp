@@ -428,18 +428,56 @@ TransientGreenPair MakeTransientGreenPair(double Y, double Z, double g, bool wit
   return MakeTransientGreenPairInFluid(Y, Z, 0.5 * std::sqrt(g), with_log);
 }
 
-TransientGreenPair MakeTransientGreenPairInFluid(double Y, double Z, double half_sqrt_g, bool with_log) {
-  // Principal √a of a = |Z| − i|Y| with real arithmetic only (√a = (sqrt((r + |Z|)/2), −sqrt((r − |Z|)/2)),
-  // r = |a| = |√a|²), and w = √g/(2√a) = √g conj(√a)/(2r).
-  const double p = -Z, Yabs = std::fabs(Y), r = std::sqrt(p * p + Yabs * Yabs);
-  const double scale = half_sqrt_g / r;
-  TransientGreenPair out;
-  out.a = cd(p, -Yabs);
-  out.w = cd(scale * std::sqrt(0.5 * (r + p)), scale * std::sqrt(0.5 * std::fmax(r - p, 0.0)));
-  // ln w: arg w = ½ arg(conj a) in [0, π/4], whose tangent is the half-angle |Y|/(r + |Z|) (no cancellation).
-  if (with_log) out.log_w = cd(0.5 * std::log(std::norm(out.w)), UnitArctangent(Yabs / (r + p)));
-  out.conj = Y < 0;
-  return out;
+void MakeTransientGreenPairsInFluid(const double* Y, const double* Z, int n, double half_sqrt_g, bool with_log,
+                                    TransientGreenPair* out) {
+  int k = 0;
+#if defined(__SSE2__)
+  // Lane by lane the operations of MakeTransientGreenPairInFluid and UnitArctangent (the sector chosen by
+  // masks, both reduced arguments computed), in the same order: the same correctly rounded results.
+  const __m128d sign = _mm_set1_pd(-0.0), zero = _mm_setzero_pd(), half = _mm_set1_pd(0.5);
+  const __m128d one = _mm_set1_pd(1.0), hsg = _mm_set1_pd(half_sqrt_g);
+  const __m128d tan_pi16 = _mm_set1_pd(0.198912367379658), tan_3pi16 = _mm_set1_pd(0.6681786379192989);
+  const __m128d tan_pi8 = _mm_set1_pd(0.41421356237309503);
+  const __m128d pi8 = _mm_set1_pd(0.39269908169872414), pi4 = _mm_set1_pd(0.78539816339744828);
+  for (; k + 1 < n; k += 2) {
+    const __m128d y = _mm_loadu_pd(Y + k), z = _mm_loadu_pd(Z + k);
+    const __m128d p = _mm_xor_pd(z, sign), ya = _mm_andnot_pd(sign, y);
+    const __m128d r = _mm_sqrt_pd(_mm_add_pd(_mm_mul_pd(p, p), _mm_mul_pd(ya, ya)));
+    const __m128d scale = _mm_div_pd(hsg, r);
+    const __m128d r_plus_p = _mm_add_pd(r, p);
+    const __m128d wr = _mm_mul_pd(scale, _mm_sqrt_pd(_mm_mul_pd(half, r_plus_p)));
+    const __m128d wi = _mm_mul_pd(scale, _mm_sqrt_pd(_mm_mul_pd(half, _mm_max_pd(_mm_sub_pd(r, p), zero))));
+    alignas(16) double a_re[2], a_im[2], w_re[2], w_im[2], arg[2] = {0.0, 0.0};
+    _mm_store_pd(a_re, p), _mm_store_pd(a_im, _mm_xor_pd(ya, sign));
+    _mm_store_pd(w_re, wr), _mm_store_pd(w_im, wi);
+    if (with_log) {
+      const __m128d u = _mm_div_pd(ya, r_plus_p);
+      const __m128d high = _mm_cmpgt_pd(u, tan_3pi16);
+      const __m128d mid = _mm_andnot_pd(high, _mm_cmpgt_pd(u, tan_pi16));
+      const __m128d v_high = _mm_div_pd(_mm_sub_pd(u, one), _mm_add_pd(u, one));
+      const __m128d v_mid = _mm_div_pd(_mm_sub_pd(u, tan_pi8), _mm_add_pd(one, _mm_mul_pd(u, tan_pi8)));
+      const __m128d low = _mm_andnot_pd(_mm_or_pd(high, mid), u);
+      const __m128d v = _mm_or_pd(_mm_or_pd(_mm_and_pd(high, v_high), _mm_and_pd(mid, v_mid)), low);
+      const __m128d c = _mm_or_pd(_mm_and_pd(high, pi4), _mm_and_pd(mid, pi8));
+      const __m128d s = _mm_mul_pd(v, v);
+      __m128d q = _mm_set1_pd(-1.0 / 21);
+      q = _mm_add_pd(_mm_mul_pd(q, s), _mm_set1_pd(1.0 / 19)), q = _mm_sub_pd(_mm_mul_pd(q, s), _mm_set1_pd(1.0 / 17));
+      q = _mm_add_pd(_mm_mul_pd(q, s), _mm_set1_pd(1.0 / 15)), q = _mm_sub_pd(_mm_mul_pd(q, s), _mm_set1_pd(1.0 / 13));
+      q = _mm_add_pd(_mm_mul_pd(q, s), _mm_set1_pd(1.0 / 11)), q = _mm_sub_pd(_mm_mul_pd(q, s), _mm_set1_pd(1.0 / 9));
+      q = _mm_add_pd(_mm_mul_pd(q, s), _mm_set1_pd(1.0 / 7)), q = _mm_sub_pd(_mm_mul_pd(q, s), _mm_set1_pd(1.0 / 5));
+      q = _mm_add_pd(_mm_mul_pd(q, s), _mm_set1_pd(1.0 / 3));
+      _mm_store_pd(arg, _mm_add_pd(c, _mm_sub_pd(v, _mm_mul_pd(_mm_mul_pd(v, s), q))));
+    }
+    for (int m = 0; m < 2; ++m) {
+      TransientGreenPair& o = out[k + m];
+      o.a = cd(a_re[m], a_im[m]);
+      o.w = cd(w_re[m], w_im[m]);
+      o.log_w = with_log ? cd(0.5 * std::log(std::norm(o.w)), arg[m]) : cd(0.0);
+      o.conj = Y[k + m] < 0;
+    }
+  }
+#endif
+  for (; k < n; ++k) out[k] = MakeTransientGreenPairInFluid(Y[k], Z[k], half_sqrt_g, with_log);
 }
 
 cd TransientGreenTimeIntegral(const TransientGreenPair& pair, double t) {

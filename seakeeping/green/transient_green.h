@@ -16,7 +16,10 @@
 // algebraic asymptotic series plus the exact exponential part replaces the cancelling forms of H_t and H'
 // (docs/theory.md, 'Transient Green function: numerical pitfalls', item 2). a = 0 (both points on the free
 // surface at the same y) has no finite value and throws.
+#include <cmath>
 #include <complex>
+
+#include "seakeeping/green/unit_arctangent.h"
 
 namespace hullopt::sk {
 
@@ -59,7 +62,26 @@ TransientGreenPair MakeTransientGreenPair(double Y, double Z, double g, bool wit
 
 /// The same without argument checks, with half_sqrt_g = √g/2 [m^½/s] computed once by the caller: the strip
 /// kernel's hot path, whose field points lie strictly in the fluid (Z < 0, finite: checked with the panels).
-TransientGreenPair MakeTransientGreenPairInFluid(double Y, double Z, double half_sqrt_g, bool with_log = true);
+/// Inline, so that a loop over many pairs overlaps their square roots, division and arctangent.
+inline TransientGreenPair MakeTransientGreenPairInFluid(double Y, double Z, double half_sqrt_g, bool with_log = true) {
+  // Principal √a of a = |Z| − i|Y| with real arithmetic only (√a = (sqrt((r + |Z|)/2), −sqrt((r − |Z|)/2)),
+  // r = |a| = |√a|²), and w = √g/(2√a) = √g conj(√a)/(2r).
+  const double p = -Z, Yabs = std::fabs(Y), r = std::sqrt(p * p + Yabs * Yabs);
+  const double scale = half_sqrt_g / r;
+  const double r_minus_p = r - p;  // >= 0 up to rounding
+  TransientGreenPair out;
+  out.a = std::complex<double>(p, -Yabs);
+  out.w = std::complex<double>(scale * std::sqrt(0.5 * (r + p)), scale * std::sqrt(0.5 * (r_minus_p > 0.0 ? r_minus_p : 0.0)));
+  // ln w: arg w = ½ arg(conj a) in [0, π/4], whose tangent is the half-angle |Y|/(r + |Z|) (no cancellation).
+  if (with_log) out.log_w = std::complex<double>(0.5 * std::log(std::norm(out.w)), UnitArctangent(Yabs / (r + p)));
+  out.conj = Y < 0;
+  return out;
+}
+
+/// MakeTransientGreenPairInFluid for n offsets (Y[k], Z[k]) at once into out[0..n): two at a time in packed
+/// SSE2 arithmetic where available, with the same operations per lane, so bitwise the same pairs.
+void MakeTransientGreenPairsInFluid(const double* Y, const double* Z, int n, double half_sqrt_g, bool with_log,
+                                    TransientGreenPair* out);
 
 /// H⁽⁻¹⁾ at lag t >= 0 [s] for a prepared pair (no argument checks: the strip kernel's hot path).
 std::complex<double> TransientGreenTimeIntegral(const TransientGreenPair& pair, double t);

@@ -89,19 +89,21 @@ std::vector<Level> ComputeLevels(const FieldSet& f, const std::vector<Panel>& sr
   // argument checks.
   const double half_sqrt_g = 0.5 * std::sqrt(g);
   const bool both_positive = nl == 2 && lags[0] > 0.0 && lags[1] > 0.0;  // the interleaved two-lag form
+  // The pairs of one field point with every end point first, in a loop of independent iterations (their
+  // square roots and divisions overlap), then the table work.
+  std::vector<TransientGreenPair> pairs(ne);
+  std::vector<double> Y(ne), Z(ne);
   for (int i = 0; velocity && i < nf; ++i) {
+    for (int q = 0; q < ne; ++q) Y[q] = f.cy[i] - e.y[q], Z[q] = f.cz[i] + e.z[q];
+    MakeTransientGreenPairsInFluid(Y.data(), Z.data(), ne, half_sqrt_g, false, pairs.data());
     int q0 = 0;
-    for (; both_positive && q0 + 1 < ne; q0 += 2) {  // two end points at once: four interleaved chains
-      const TransientGreenPair pair[2] = {MakeTransientGreenPairInFluid(f.cy[i] - e.y[q0], f.cz[i] + e.z[q0], half_sqrt_g, false),
-                                          MakeTransientGreenPairInFluid(f.cy[i] - e.y[q0 + 1], f.cz[i] + e.z[q0 + 1], half_sqrt_g, false)};
-      TransientGreenTimeIntegrals2x2(pair, lags.data(), &h[q0 * nl]);
-    }
+    for (; both_positive && q0 + 1 < ne; q0 += 2)  // two end points at once: four interleaved chains
+      TransientGreenTimeIntegrals2x2(&pairs[q0], lags.data(), &h[q0 * nl]);
     for (int q = q0; q < ne; ++q) {
-      const TransientGreenPair pair = MakeTransientGreenPairInFluid(f.cy[i] - e.y[q], f.cz[i] + e.z[q], half_sqrt_g, false);
       if (both_positive)
-        TransientGreenTimeIntegrals2(pair, lags.data(), &h[q * nl]);
+        TransientGreenTimeIntegrals2(pairs[q], lags.data(), &h[q * nl]);
       else
-        for (int l = 0; l < nl; ++l) h[q * nl + l] = lags[l] > 0.0 ? TransientGreenTimeIntegral(pair, lags[l]) : 0.0;
+        for (int l = 0; l < nl; ++l) h[q * nl + l] = lags[l] > 0.0 ? TransientGreenTimeIntegral(pairs[q], lags[l]) : 0.0;
     }
     // (1/2π) Re[(n_z + i n_y) i e^{−iα} (ΔH⁽⁻¹⁾(q2) − ΔH⁽⁻¹⁾(q1))] (memory_influence.h).
     const std::complex<double> n(f.nz[i], f.ny[i]);
@@ -113,19 +115,17 @@ std::vector<Level> ComputeLevels(const FieldSet& f, const std::vector<Panel>& sr
   }
   // Momentum: Σ_q wnz_q ∫_panel Re H⁽⁻¹⁾ ds, exact along the panel through K (memory_influence.h).
   for (std::size_t p = 0; p < f.qy.size(); ++p) {
+    for (int q = 0; q < ne; ++q) Y[q] = f.qy[p] - e.y[q], Z[q] = f.qz[p] + e.z[q];
+    MakeTransientGreenPairsInFluid(Y.data(), Z.data(), ne, half_sqrt_g, true, pairs.data());
     int q0 = 0;
-    for (; both_positive && q0 + 1 < ne; q0 += 2) {
-      const TransientGreenPair pair[2] = {MakeTransientGreenPairInFluid(f.qy[p] - e.y[q0], f.qz[p] + e.z[q0], half_sqrt_g),
-                                          MakeTransientGreenPairInFluid(f.qy[p] - e.y[q0 + 1], f.qz[p] + e.z[q0 + 1], half_sqrt_g)};
-      TransientGreenSpaceTimeIntegrals2x2(pair, lags.data(), log_lag.data(), g, &h[q0 * nl]);
-    }
+    for (; both_positive && q0 + 1 < ne; q0 += 2)
+      TransientGreenSpaceTimeIntegrals2x2(&pairs[q0], lags.data(), log_lag.data(), g, &h[q0 * nl]);
     for (int q = q0; q < ne; ++q) {
-      const TransientGreenPair pair = MakeTransientGreenPairInFluid(f.qy[p] - e.y[q], f.qz[p] + e.z[q], half_sqrt_g);
       if (both_positive)
-        TransientGreenSpaceTimeIntegrals2(pair, lags.data(), log_lag.data(), g, &h[q * nl]);
+        TransientGreenSpaceTimeIntegrals2(pairs[q], lags.data(), log_lag.data(), g, &h[q * nl]);
       else
         for (int l = 0; l < nl; ++l)
-          h[q * nl + l] = lags[l] > 0.0 ? TransientGreenSpaceTimeIntegral(pair, lags[l], log_lag[l], g) : 0.0;
+          h[q * nl + l] = lags[l] > 0.0 ? TransientGreenSpaceTimeIntegral(pairs[q], lags[l], log_lag[l], g) : 0.0;
     }
     for (int j = 0; j < ns; ++j)
       for (int l = 0; l < nl; ++l)

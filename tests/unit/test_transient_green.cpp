@@ -7,6 +7,7 @@
 #include <cmath>
 #include <complex>
 #include <stdexcept>
+#include <vector>
 
 #include "seakeeping/green/gauss_legendre.h"
 #include "seakeeping/green/transient_green.h"
@@ -203,4 +204,28 @@ TEST_CASE("guards", "[green]") {
   CHECK_THROWS_AS(hullopt::sk::TransientGreen(0.1, 0.1, 1.0, kG), std::invalid_argument);
   CHECK_THROWS_AS(hullopt::sk::TransientGreen(0.1, -0.1, -1.0, kG), std::invalid_argument);
   CHECK_THROWS_AS(hullopt::sk::TransientGreenTimeIntegral(0.0, 0.0, 1.0, kG), std::domain_error);
+}
+
+TEST_CASE("batched pair set-up is bitwise the single-pair one", "[green]") {
+  // Offsets over every arctangent sector (|Y|/(r + |Z|) from 0 to 1), both signs of Y, tiny to large, and an
+  // odd count so that the scalar tail runs too.
+  std::vector<double> Y, Z;
+  for (double y : {0.0, 1e-9, 0.003, 0.07, 0.2, 0.5, 1.0, 3.0, 40.0})
+    for (double z : {-1e-9, -0.002, -0.05, -0.3, -1.0, -7.0})
+      for (double s : {1.0, -1.0}) Y.push_back(s * y), Z.push_back(z);
+  Y.push_back(0.41), Z.push_back(-0.17);
+  const double half_sqrt_g = 0.5 * std::sqrt(9.81);
+  for (bool with_log : {false, true}) {
+    std::vector<hullopt::sk::TransientGreenPair> batch(Y.size());
+    hullopt::sk::MakeTransientGreenPairsInFluid(Y.data(), Z.data(), static_cast<int>(Y.size()), half_sqrt_g,
+                                                with_log, batch.data());
+    for (std::size_t k = 0; k < Y.size(); ++k) {
+      const auto one = hullopt::sk::MakeTransientGreenPairInFluid(Y[k], Z[k], half_sqrt_g, with_log);
+      INFO("Y " << Y[k] << " Z " << Z[k] << " with_log " << with_log);
+      CHECK(batch[k].a == one.a);
+      CHECK(batch[k].w == one.w);
+      CHECK(batch[k].log_w == one.log_w);
+      CHECK(batch[k].conj == one.conj);
+    }
+  }
 }
