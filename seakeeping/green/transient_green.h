@@ -102,6 +102,11 @@ void TransientGreenTimeIntegrals2x2(const TransientGreenPair pair[2], const doub
 void TransientGreenSpaceTimeIntegrals2x2(const TransientGreenPair pair[2], const double t[2], const double log_t[2],
                                          double g, std::complex<double> out[4]);
 
+/// The same for four pairs (eight table evaluations): out[2p + n] is pair[p] at t[n].
+void TransientGreenTimeIntegrals4x2(const TransientGreenPair pair[4], const double t[2], std::complex<double> out[8]);
+void TransientGreenSpaceTimeIntegrals4x2(const TransientGreenPair pair[4], const double t[2], const double log_t[2],
+                                         double g, std::complex<double> out[8]);
+
 /// Complex Dawson function F(x) = e^{−x²} ∫_0^x e^{u²} du (libcerf).
 std::complex<double> Dawson(std::complex<double> x);
 

@@ -97,7 +97,9 @@ std::vector<Level> ComputeLevels(const FieldSet& f, const std::vector<Panel>& sr
     for (int q = 0; q < ne; ++q) Y[q] = f.cy[i] - e.y[q], Z[q] = f.cz[i] + e.z[q];
     MakeTransientGreenPairsInFluid(Y.data(), Z.data(), ne, half_sqrt_g, false, pairs.data());
     int q0 = 0;
-    for (; both_positive && q0 + 1 < ne; q0 += 2)  // two end points at once: four interleaved chains
+    for (; both_positive && q0 + 3 < ne; q0 += 4)  // four end points at once: eight interleaved chains
+      TransientGreenTimeIntegrals4x2(&pairs[q0], lags.data(), &h[q0 * nl]);
+    for (; both_positive && q0 + 1 < ne; q0 += 2)
       TransientGreenTimeIntegrals2x2(&pairs[q0], lags.data(), &h[q0 * nl]);
     for (int q = q0; q < ne; ++q) {
       if (both_positive)
@@ -118,6 +120,8 @@ std::vector<Level> ComputeLevels(const FieldSet& f, const std::vector<Panel>& sr
     for (int q = 0; q < ne; ++q) Y[q] = f.qy[p] - e.y[q], Z[q] = f.qz[p] + e.z[q];
     MakeTransientGreenPairsInFluid(Y.data(), Z.data(), ne, half_sqrt_g, true, pairs.data());
     int q0 = 0;
+    for (; both_positive && q0 + 3 < ne; q0 += 4)
+      TransientGreenSpaceTimeIntegrals4x2(&pairs[q0], lags.data(), log_lag.data(), g, &h[q0 * nl]);
     for (; both_positive && q0 + 1 < ne; q0 += 2)
       TransientGreenSpaceTimeIntegrals2x2(&pairs[q0], lags.data(), log_lag.data(), g, &h[q0 * nl]);
     for (int q = q0; q < ne; ++q) {

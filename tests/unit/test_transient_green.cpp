@@ -229,3 +229,38 @@ TEST_CASE("batched pair set-up is bitwise the single-pair one", "[green]") {
     }
   }
 }
+
+TEST_CASE("interleaved table forms are bitwise the one-point forms", "[green]") {
+  // Two, four and eight evaluations at once (packed SSE2, or AVX where the processor has it) against one at a
+  // time (scalar Horner): the same operations per point, so the same bits; lags inside the table radius and
+  // one pair whose long lag is beyond it (the asymptotic branch).
+  namespace sk = hullopt::sk;
+  const double g = 9.81, half_sqrt_g = 0.5 * std::sqrt(g);
+  const double Y[4] = {0.013, -0.21, 0.4, -1.7}, Z[4] = {-0.02, -0.11, -0.6, -0.05};
+  for (const auto& lags : {std::vector<double>{0.05, 0.08}, std::vector<double>{0.3, 0.41}, std::vector<double>{1.1, 4.0}}) {
+    const double t[2] = {lags[0], lags[1]}, log_t[2] = {std::log(t[0]), std::log(t[1])};
+    sk::TransientGreenPair pair[4];
+    for (int p = 0; p < 4; ++p) pair[p] = sk::MakeTransientGreenPairInFluid(Y[p], Z[p], half_sqrt_g);
+    cd h1[8], k1[8];
+    for (int n = 0; n < 8; ++n) {
+      h1[n] = sk::TransientGreenTimeIntegral(pair[n / 2], t[n % 2]);
+      k1[n] = sk::TransientGreenSpaceTimeIntegral(pair[n / 2], t[n % 2], log_t[n % 2], g);
+    }
+    cd h2[2], k2[2], h4[4], k4[4], h8[8], k8[8];
+    sk::TransientGreenTimeIntegrals2(pair[1], t, h2);
+    sk::TransientGreenSpaceTimeIntegrals2(pair[1], t, log_t, g, k2);
+    sk::TransientGreenTimeIntegrals2x2(pair + 2, t, h4);
+    sk::TransientGreenSpaceTimeIntegrals2x2(pair + 2, t, log_t, g, k4);
+    sk::TransientGreenTimeIntegrals4x2(pair, t, h8);
+    sk::TransientGreenSpaceTimeIntegrals4x2(pair, t, log_t, g, k8);
+    for (int n = 0; n < 8; ++n) {
+      INFO("lags " << t[0] << ", " << t[1] << " point " << n);
+      CHECK(h8[n] == h1[n]);
+      CHECK(k8[n] == k1[n]);
+      if (n < 4) CHECK(h4[n] == h1[4 + n]);
+      if (n < 4) CHECK(k4[n] == k1[4 + n]);
+      if (n < 2) CHECK(h2[n] == h1[2 + n]);
+      if (n < 2) CHECK(k2[n] == k1[2 + n]);
+    }
+  }
+}
