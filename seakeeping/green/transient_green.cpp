@@ -369,6 +369,58 @@ __attribute__((target("avx"))) void DawsonIntegralTableAvx(const cd* x, PhiAndF*
   }
 }
 
+// MakeTransientGreenPairsInFluid four at a time in 256-bit registers: per lane the operations of
+// MakeTransientGreenPairInFluid and UnitArctangent (the sector chosen by masks, both reduced arguments
+// computed), in the same order, so the same bits; returns how many pairs it made.
+__attribute__((target("avx"))) int MakeTransientGreenPairsAvx(const double* Y, const double* Z, int n,
+                                                               double half_sqrt_g, bool with_log,
+                                                               TransientGreenPair* out) {
+  const __m256d sign = _mm256_set1_pd(-0.0), zero = _mm256_setzero_pd(), half = _mm256_set1_pd(0.5);
+  const __m256d one = _mm256_set1_pd(1.0), hsg = _mm256_set1_pd(half_sqrt_g);
+  const __m256d tan_pi16 = _mm256_set1_pd(0.198912367379658), tan_3pi16 = _mm256_set1_pd(0.6681786379192989);
+  const __m256d tan_pi8 = _mm256_set1_pd(0.41421356237309503);
+  const __m256d pi8 = _mm256_set1_pd(0.39269908169872414), pi4 = _mm256_set1_pd(0.78539816339744828);
+  int k = 0;
+  for (; k + 3 < n; k += 4) {
+    const __m256d y = _mm256_loadu_pd(Y + k), z = _mm256_loadu_pd(Z + k);
+    const __m256d p = _mm256_xor_pd(z, sign), ya = _mm256_andnot_pd(sign, y);
+    const __m256d r = _mm256_sqrt_pd(_mm256_add_pd(_mm256_mul_pd(p, p), _mm256_mul_pd(ya, ya)));
+    const __m256d scale = _mm256_div_pd(hsg, r);
+    const __m256d r_plus_p = _mm256_add_pd(r, p);
+    const __m256d wr = _mm256_mul_pd(scale, _mm256_sqrt_pd(_mm256_mul_pd(half, r_plus_p)));
+    const __m256d wi =
+        _mm256_mul_pd(scale, _mm256_sqrt_pd(_mm256_mul_pd(half, _mm256_max_pd(_mm256_sub_pd(r, p), zero))));
+    alignas(32) double a_re[4], a_im[4], w_re[4], w_im[4], arg[4] = {0.0, 0.0, 0.0, 0.0};
+    _mm256_store_pd(a_re, p), _mm256_store_pd(a_im, _mm256_xor_pd(ya, sign));
+    _mm256_store_pd(w_re, wr), _mm256_store_pd(w_im, wi);
+    if (with_log) {
+      const __m256d u = _mm256_div_pd(ya, r_plus_p);
+      const __m256d high = _mm256_cmp_pd(u, tan_3pi16, _CMP_GT_OQ);
+      const __m256d mid = _mm256_andnot_pd(high, _mm256_cmp_pd(u, tan_pi16, _CMP_GT_OQ));
+      const __m256d v_high = _mm256_div_pd(_mm256_sub_pd(u, one), _mm256_add_pd(u, one));
+      const __m256d v_mid =
+          _mm256_div_pd(_mm256_sub_pd(u, tan_pi8), _mm256_add_pd(one, _mm256_mul_pd(u, tan_pi8)));
+      const __m256d low = _mm256_andnot_pd(_mm256_or_pd(high, mid), u);
+      const __m256d v = _mm256_or_pd(_mm256_or_pd(_mm256_and_pd(high, v_high), _mm256_and_pd(mid, v_mid)), low);
+      const __m256d c = _mm256_or_pd(_mm256_and_pd(high, pi4), _mm256_and_pd(mid, pi8));
+      const __m256d s = _mm256_mul_pd(v, v);
+      __m256d q = _mm256_set1_pd(-1.0 / 21);
+      const double coef[9] = {1.0 / 19, -1.0 / 17, 1.0 / 15, -1.0 / 13, 1.0 / 11, -1.0 / 9, 1.0 / 7, -1.0 / 5, 1.0 / 3};
+      for (double a : coef)  // p·s + 1/19, p·s − 1/17, ...: subtracting 1/17 is adding −1/17 exactly
+        q = _mm256_add_pd(_mm256_mul_pd(q, s), _mm256_set1_pd(a));
+      _mm256_store_pd(arg, _mm256_add_pd(c, _mm256_sub_pd(v, _mm256_mul_pd(_mm256_mul_pd(v, s), q))));
+    }
+    for (int m = 0; m < 4; ++m) {
+      TransientGreenPair& o = out[k + m];
+      o.a = cd(a_re[m], a_im[m]);
+      o.w = cd(w_re[m], w_im[m]);
+      o.log_w = with_log ? cd(0.5 * std::log(std::norm(o.w)), arg[m]) : cd(0.0);
+      o.conj = Y[k + m] < 0;
+    }
+  }
+  return k;
+}
+
 bool HasAvx() {
   static const bool has = __builtin_cpu_supports("avx");
   return has;
@@ -529,52 +581,10 @@ TransientGreenPair MakeTransientGreenPair(double Y, double Z, double g, bool wit
 void MakeTransientGreenPairsInFluid(const double* Y, const double* Z, int n, double half_sqrt_g, bool with_log,
                                     TransientGreenPair* out) {
   int k = 0;
-#if defined(__SSE2__)
-  // Lane by lane the operations of MakeTransientGreenPairInFluid and UnitArctangent (the sector chosen by
-  // masks, both reduced arguments computed), in the same order: the same correctly rounded results.
-  const __m128d sign = _mm_set1_pd(-0.0), zero = _mm_setzero_pd(), half = _mm_set1_pd(0.5);
-  const __m128d one = _mm_set1_pd(1.0), hsg = _mm_set1_pd(half_sqrt_g);
-  const __m128d tan_pi16 = _mm_set1_pd(0.198912367379658), tan_3pi16 = _mm_set1_pd(0.6681786379192989);
-  const __m128d tan_pi8 = _mm_set1_pd(0.41421356237309503);
-  const __m128d pi8 = _mm_set1_pd(0.39269908169872414), pi4 = _mm_set1_pd(0.78539816339744828);
-  for (; k + 1 < n; k += 2) {
-    const __m128d y = _mm_loadu_pd(Y + k), z = _mm_loadu_pd(Z + k);
-    const __m128d p = _mm_xor_pd(z, sign), ya = _mm_andnot_pd(sign, y);
-    const __m128d r = _mm_sqrt_pd(_mm_add_pd(_mm_mul_pd(p, p), _mm_mul_pd(ya, ya)));
-    const __m128d scale = _mm_div_pd(hsg, r);
-    const __m128d r_plus_p = _mm_add_pd(r, p);
-    const __m128d wr = _mm_mul_pd(scale, _mm_sqrt_pd(_mm_mul_pd(half, r_plus_p)));
-    const __m128d wi = _mm_mul_pd(scale, _mm_sqrt_pd(_mm_mul_pd(half, _mm_max_pd(_mm_sub_pd(r, p), zero))));
-    alignas(16) double a_re[2], a_im[2], w_re[2], w_im[2], arg[2] = {0.0, 0.0};
-    _mm_store_pd(a_re, p), _mm_store_pd(a_im, _mm_xor_pd(ya, sign));
-    _mm_store_pd(w_re, wr), _mm_store_pd(w_im, wi);
-    if (with_log) {
-      const __m128d u = _mm_div_pd(ya, r_plus_p);
-      const __m128d high = _mm_cmpgt_pd(u, tan_3pi16);
-      const __m128d mid = _mm_andnot_pd(high, _mm_cmpgt_pd(u, tan_pi16));
-      const __m128d v_high = _mm_div_pd(_mm_sub_pd(u, one), _mm_add_pd(u, one));
-      const __m128d v_mid = _mm_div_pd(_mm_sub_pd(u, tan_pi8), _mm_add_pd(one, _mm_mul_pd(u, tan_pi8)));
-      const __m128d low = _mm_andnot_pd(_mm_or_pd(high, mid), u);
-      const __m128d v = _mm_or_pd(_mm_or_pd(_mm_and_pd(high, v_high), _mm_and_pd(mid, v_mid)), low);
-      const __m128d c = _mm_or_pd(_mm_and_pd(high, pi4), _mm_and_pd(mid, pi8));
-      const __m128d s = _mm_mul_pd(v, v);
-      __m128d q = _mm_set1_pd(-1.0 / 21);
-      q = _mm_add_pd(_mm_mul_pd(q, s), _mm_set1_pd(1.0 / 19)), q = _mm_sub_pd(_mm_mul_pd(q, s), _mm_set1_pd(1.0 / 17));
-      q = _mm_add_pd(_mm_mul_pd(q, s), _mm_set1_pd(1.0 / 15)), q = _mm_sub_pd(_mm_mul_pd(q, s), _mm_set1_pd(1.0 / 13));
-      q = _mm_add_pd(_mm_mul_pd(q, s), _mm_set1_pd(1.0 / 11)), q = _mm_sub_pd(_mm_mul_pd(q, s), _mm_set1_pd(1.0 / 9));
-      q = _mm_add_pd(_mm_mul_pd(q, s), _mm_set1_pd(1.0 / 7)), q = _mm_sub_pd(_mm_mul_pd(q, s), _mm_set1_pd(1.0 / 5));
-      q = _mm_add_pd(_mm_mul_pd(q, s), _mm_set1_pd(1.0 / 3));
-      _mm_store_pd(arg, _mm_add_pd(c, _mm_sub_pd(v, _mm_mul_pd(_mm_mul_pd(v, s), q))));
-    }
-    for (int m = 0; m < 2; ++m) {
-      TransientGreenPair& o = out[k + m];
-      o.a = cd(a_re[m], a_im[m]);
-      o.w = cd(w_re[m], w_im[m]);
-      o.log_w = with_log ? cd(0.5 * std::log(std::norm(o.w)), arg[m]) : cd(0.0);
-      o.conj = Y[k + m] < 0;
-    }
-  }
+#ifdef HULLOPT_AVX_TABLE
+  if (HasAvx()) k = MakeTransientGreenPairsAvx(Y, Z, n, half_sqrt_g, with_log, out);
 #endif
+  // The rest (and all of it without AVX) one at a time: independent iterations, which overlap anyway.
   for (; k < n; ++k) out[k] = MakeTransientGreenPairInFluid(Y[k], Z[k], half_sqrt_g, with_log);
 }
 

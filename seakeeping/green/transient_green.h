@@ -78,8 +78,8 @@ inline TransientGreenPair MakeTransientGreenPairInFluid(double Y, double Z, doub
   return out;
 }
 
-/// MakeTransientGreenPairInFluid for n offsets (Y[k], Z[k]) at once into out[0..n): two at a time in packed
-/// SSE2 arithmetic where available, with the same operations per lane, so bitwise the same pairs.
+/// MakeTransientGreenPairInFluid for n offsets (Y[k], Z[k]) at once into out[0..n): four at a time in AVX
+/// arithmetic where the processor has it, with the same operations per lane, so bitwise the same pairs.
 void MakeTransientGreenPairsInFluid(const double* Y, const double* Z, int n, double half_sqrt_g, bool with_log,
                                     TransientGreenPair* out);
 

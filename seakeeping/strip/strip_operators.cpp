@@ -71,77 +71,100 @@ SourceEnds MakeSourceEnds(const std::vector<Panel>& src) {
   return e;
 }
 
+// The table work for `count` prepared pairs at the lags (lag 0 gives 0): four pairs per call where all
+// lags are positive (eight interleaved chains), the remainder two and one at a time; out[m * nl + l] is
+// pair m at lag l. Every grouping gives the same bits (the interleaved forms are the one-point arithmetic).
+template <class Four, class Two, class One, class Single>
+void TableWork(const TransientGreenPair* pairs, int count, const std::vector<double>& lags, Four four, Two two,
+               One one, Single single, std::complex<double>* out) {
+  const int nl = static_cast<int>(lags.size());
+  const bool both_positive = nl == 2 && lags[0] > 0.0 && lags[1] > 0.0;
+  int m = 0;
+  if (both_positive) {
+    for (; m + 3 < count; m += 4) four(&pairs[m], &out[m * nl]);
+    for (; m + 1 < count; m += 2) two(&pairs[m], &out[m * nl]);
+    for (; m < count; ++m) one(pairs[m], &out[m * nl]);
+    return;
+  }
+  for (; m < count; ++m)
+    for (int l = 0; l < nl; ++l) out[m * nl + l] = lags[l] > 0.0 ? single(pairs[m], l) : 0.0;
+}
+
 // All levels at once: the lag-independent part of the kernel (square roots, division, logarithm of each
 // field-point/end-point offset) is computed once and shared by the lags. Lag 0 gives a zero level. Without
-// `velocity` only pl is computed (nv stays zero).
-std::vector<Level> ComputeLevels(const FieldSet& f, const std::vector<Panel>& src, const std::vector<double>& lags,
+// `velocity` only pl is computed (nv stays zero). All pairs of a call are prepared in one batch (their square
+// roots and divisions overlap) and their table work runs in groups of four across field points.
+std::vector<Level> ComputeLevels(const FieldSet& f, const SourceEnds& e, const std::vector<double>& lags,
                                  double g, double rho, bool velocity = true) {
-  const int nf = static_cast<int>(f.cy.size()), ns = static_cast<int>(src.size());
+  const int nf = static_cast<int>(f.cy.size()), ns = static_cast<int>(e.first.size());
+  const int nq = static_cast<int>(f.qy.size());
   const int nl = static_cast<int>(lags.size());
+  if (nl < 1 || nl > 2) throw std::logic_error("ComputeLevels: one or two lags");
   std::vector<Level> out(nl, Level{Eigen::MatrixXd::Zero(velocity ? nf : 0, ns), Eigen::RowVectorXd::Zero(ns)});
   if (ns == 0) return out;
-  const SourceEnds e = MakeSourceEnds(src);
   const int ne = static_cast<int>(e.y.size());
-  std::vector<double> log_lag(nl, 0.0);
+  double log_lag[2] = {0.0, 0.0};
   for (int l = 0; l < nl; ++l) log_lag[l] = lags[l] > 0.0 ? std::log(lags[l]) : 0.0;
-  std::vector<std::complex<double>> h(static_cast<std::size_t>(ne) * nl);
+  // Per-thread scratch, reused from call to call.
+  thread_local std::vector<std::complex<double>> h;
+  thread_local std::vector<TransientGreenPair> pairs;
+  thread_local std::vector<double> Y, Z;
+  const std::size_t most = static_cast<std::size_t>(std::max(nf, nq)) * ne;
+  if (h.size() < most * nl) h.resize(most * nl);
+  if (pairs.size() < most) pairs.resize(most), Y.resize(most), Z.resize(most);
   // Field points are collocation and Gauss points strictly below z = 0 (CheckPanels), so the pairs need no
   // argument checks.
   const double half_sqrt_g = 0.5 * std::sqrt(g);
-  const bool both_positive = nl == 2 && lags[0] > 0.0 && lags[1] > 0.0;  // the interleaved two-lag form
-  // The pairs of one field point with every end point first, in a loop of independent iterations (their
-  // square roots and divisions overlap), then the table work.
-  std::vector<TransientGreenPair> pairs(ne);
-  std::vector<double> Y(ne), Z(ne);
-  for (int i = 0; velocity && i < nf; ++i) {
-    for (int q = 0; q < ne; ++q) Y[q] = f.cy[i] - e.y[q], Z[q] = f.cz[i] + e.z[q];
-    MakeTransientGreenPairsInFluid(Y.data(), Z.data(), ne, half_sqrt_g, false, pairs.data());
-    int q0 = 0;
-    for (; both_positive && q0 + 3 < ne; q0 += 4)  // four end points at once: eight interleaved chains
-      TransientGreenTimeIntegrals4x2(&pairs[q0], lags.data(), &h[q0 * nl]);
-    for (; both_positive && q0 + 1 < ne; q0 += 2)
-      TransientGreenTimeIntegrals2x2(&pairs[q0], lags.data(), &h[q0 * nl]);
-    for (int q = q0; q < ne; ++q) {
-      if (both_positive)
-        TransientGreenTimeIntegrals2(pairs[q], lags.data(), &h[q * nl]);
-      else
-        for (int l = 0; l < nl; ++l) h[q * nl + l] = lags[l] > 0.0 ? TransientGreenTimeIntegral(pairs[q], lags[l]) : 0.0;
-    }
+  const double* t = lags.data();
+  if (velocity) {
+    for (int i = 0; i < nf; ++i)
+      for (int q = 0; q < ne; ++q) Y[i * ne + q] = f.cy[i] - e.y[q], Z[i * ne + q] = f.cz[i] + e.z[q];
+    MakeTransientGreenPairsInFluid(Y.data(), Z.data(), nf * ne, half_sqrt_g, false, pairs.data());
+    TableWork(
+        pairs.data(), nf * ne, lags,
+        [&](const TransientGreenPair* p, std::complex<double>* o) { TransientGreenTimeIntegrals4x2(p, t, o); },
+        [&](const TransientGreenPair* p, std::complex<double>* o) { TransientGreenTimeIntegrals2x2(p, t, o); },
+        [&](const TransientGreenPair& p, std::complex<double>* o) { TransientGreenTimeIntegrals2(p, t, o); },
+        [&](const TransientGreenPair& p, int l) { return TransientGreenTimeIntegral(p, t[l]); }, h.data());
     // (1/2π) Re[(n_z + i n_y) i e^{−iα} (ΔH⁽⁻¹⁾(q2) − ΔH⁽⁻¹⁾(q1))] (memory_influence.h).
-    const std::complex<double> n(f.nz[i], f.ny[i]);
-    for (int j = 0; j < ns; ++j) {
-      const std::complex<double> c = kInv2Pi * n * e.i_e_minus_ialpha[j];
-      for (int l = 0; l < nl; ++l)
-        out[l].nv(i, j) = (c * (h[e.second[j] * nl + l] - h[e.first[j] * nl + l])).real();
+    for (int i = 0; i < nf; ++i) {
+      const std::complex<double>* hi = &h[static_cast<std::size_t>(i) * ne * nl];
+      const std::complex<double> n(f.nz[i], f.ny[i]);
+      for (int j = 0; j < ns; ++j) {
+        const std::complex<double> c = kInv2Pi * n * e.i_e_minus_ialpha[j];
+        for (int l = 0; l < nl; ++l) out[l].nv(i, j) = (c * (hi[e.second[j] * nl + l] - hi[e.first[j] * nl + l])).real();
+      }
     }
   }
   // Momentum: Σ_q wnz_q ∫_panel Re H⁽⁻¹⁾ ds, exact along the panel through K (memory_influence.h).
-  for (std::size_t p = 0; p < f.qy.size(); ++p) {
-    for (int q = 0; q < ne; ++q) Y[q] = f.qy[p] - e.y[q], Z[q] = f.qz[p] + e.z[q];
-    MakeTransientGreenPairsInFluid(Y.data(), Z.data(), ne, half_sqrt_g, true, pairs.data());
-    int q0 = 0;
-    for (; both_positive && q0 + 3 < ne; q0 += 4)
-      TransientGreenSpaceTimeIntegrals4x2(&pairs[q0], lags.data(), log_lag.data(), g, &h[q0 * nl]);
-    for (; both_positive && q0 + 1 < ne; q0 += 2)
-      TransientGreenSpaceTimeIntegrals2x2(&pairs[q0], lags.data(), log_lag.data(), g, &h[q0 * nl]);
-    for (int q = q0; q < ne; ++q) {
-      if (both_positive)
-        TransientGreenSpaceTimeIntegrals2(pairs[q], lags.data(), log_lag.data(), g, &h[q * nl]);
-      else
-        for (int l = 0; l < nl; ++l)
-          h[q * nl + l] = lags[l] > 0.0 ? TransientGreenSpaceTimeIntegral(pairs[q], lags[l], log_lag[l], g) : 0.0;
-    }
+  for (int p = 0; p < nq; ++p)
+    for (int q = 0; q < ne; ++q) Y[p * ne + q] = f.qy[p] - e.y[q], Z[p * ne + q] = f.qz[p] + e.z[q];
+  MakeTransientGreenPairsInFluid(Y.data(), Z.data(), nq * ne, half_sqrt_g, true, pairs.data());
+  TableWork(
+      pairs.data(), nq * ne, lags,
+      [&](const TransientGreenPair* p, std::complex<double>* o) {
+        TransientGreenSpaceTimeIntegrals4x2(p, t, log_lag, g, o);
+      },
+      [&](const TransientGreenPair* p, std::complex<double>* o) {
+        TransientGreenSpaceTimeIntegrals2x2(p, t, log_lag, g, o);
+      },
+      [&](const TransientGreenPair& p, std::complex<double>* o) {
+        TransientGreenSpaceTimeIntegrals2(p, t, log_lag, g, o);
+      },
+      [&](const TransientGreenPair& p, int l) { return TransientGreenSpaceTimeIntegral(p, t[l], log_lag[l], g); },
+      h.data());
+  for (int p = 0; p < nq; ++p) {
+    const std::complex<double>* hp = &h[static_cast<std::size_t>(p) * ne * nl];
     for (int j = 0; j < ns; ++j)
       for (int l = 0; l < nl; ++l)
-        out[l].pl(j) += f.wnz[p] * (e.i_e_minus_ialpha[j] * (h[e.second[j] * nl + l] - h[e.first[j] * nl + l])).real();
+        out[l].pl(j) += f.wnz[p] * (e.i_e_minus_ialpha[j] * (hp[e.second[j] * nl + l] - hp[e.first[j] * nl + l])).real();
   }
   for (auto& level : out) level.pl *= -rho * kInv2Pi;
   return out;
 }
 
-Level ComputeLevel(const FieldSet& f, const std::vector<Panel>& src, double s, double g, double rho,
-                   bool velocity = true) {
-  return std::move(ComputeLevels(f, src, {s}, g, rho, velocity)[0]);
+Level ComputeLevel(const FieldSet& f, const SourceEnds& e, double s, double g, double rho, bool velocity = true) {
+  return std::move(ComputeLevels(f, e, {s}, g, rho, velocity)[0]);
 }
 
 // A lag that is a whole number of half steps, as that number (the key of shared levels).
@@ -375,6 +398,8 @@ StripOperators BuildStripOperators(const std::vector<std::vector<Panel>>& panels
   ops.momentum_memory_.resize(N);
   const bool pressure = ops.force_ == SectionalForce::kPressure;
   if (pressure) ops.pressure_momentum_[0].resize(N), ops.pressure_momentum_[1].resize(N);
+  std::vector<SourceEnds> ends(N);  // the source panels of each step as the kernel sees them, once
+  for (int n = 0; n < N; ++n) ends[n] = MakeSourceEnds(panels_per_step[n]);
   // Each n is independent and computed by one thread in a fixed order: bitwise identical for any thread
   // count.
 #pragma omp parallel for schedule(dynamic, 1)
@@ -404,7 +429,7 @@ StripOperators BuildStripOperators(const std::vector<std::vector<Panel>>& panels
       auto it = momentum_level.find({k, HalfSteps(lag, dt)});
       if (it != momentum_level.end()) return it->second;
       return momentum_level[{k, HalfSteps(lag, dt)}] =
-                 reduce(ComputeLevel(f, panels_per_step[k], lag, g, rho, false), k).pl;
+                 reduce(ComputeLevel(f, ends[k], lag, g, rho, false), k).pl;
     };
     for (int k = 0; k <= n; ++k) {
       // Lags of interval k seen at t_n: [max(0, t_k − dt/2), t_k + dt/2] (k < n), [t_n − dt/2, t_n] (k = n).
@@ -416,7 +441,7 @@ StripOperators BuildStripOperators(const std::vector<std::vector<Panel>>& panels
         s1 = (n - k - 0.5) * dt;
         s2 = k == 0 ? n * dt : (n - k + 0.5) * dt;
       }
-      std::vector<Level> ab = ComputeLevels(f, panels_per_step[k], {s1, s2}, g, rho);
+      std::vector<Level> ab = ComputeLevels(f, ends[k], {s1, s2}, g, rho);
       const Level a = reduce(std::move(ab[0]), k);
       const Level b = reduce(std::move(ab[1]), k);
       if (pressure) momentum_level[{k, HalfSteps(s1, dt)}] = a.pl, momentum_level[{k, HalfSteps(s2, dt)}] = b.pl;
@@ -472,15 +497,16 @@ StripOperators BuildFixedSectionOperators(const std::vector<Panel>& panels, int 
   for (std::size_t j = 0; j < panels.size(); ++j) ops.reduced_index_[0].push_back(static_cast<int>(j));
   ops.reduced_share_.assign(1, std::vector<double>(panels.size(), 1.0));
   const FieldSet f = MakeFieldSet(panels, options.field_points_per_panel);
+  const SourceEnds ends = MakeSourceEnds(panels);
   // Levels: half[m] at (m + ½)dt, m = 0..N−1; whole[n] at n·dt, n = 1..N−1.
   std::vector<Level> half(N), whole(N);
   const int jobs = steady_state_only ? N : 2 * N - 1;
 #pragma omp parallel for schedule(dynamic, 1)
   for (int job = 0; job < jobs; ++job) {
     if (job < N)
-      half[job] = ComputeLevel(f, panels, (job + 0.5) * dt, g, rho);
+      half[job] = ComputeLevel(f, ends, (job + 0.5) * dt, g, rho);
     else
-      whole[job - N + 1] = ComputeLevel(f, panels, (job - N + 1) * dt, g, rho);
+      whole[job - N + 1] = ComputeLevel(f, ends, (job - N + 1) * dt, g, rho);
   }
   Eigen::MatrixXd A;
   Eigen::RowVectorXd mom;

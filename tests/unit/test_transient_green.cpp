@@ -215,17 +215,22 @@ TEST_CASE("batched pair set-up is bitwise the single-pair one", "[green]") {
       for (double s : {1.0, -1.0}) Y.push_back(s * y), Z.push_back(z);
   Y.push_back(0.41), Z.push_back(-0.17);
   const double half_sqrt_g = 0.5 * std::sqrt(9.81);
+  // Counts whose remainders run the four-wide (AVX) and the scalar parts.
+  const std::size_t counts[] = {1, 3, 4, 6, 7, Y.size()};
   for (bool with_log : {false, true}) {
-    std::vector<hullopt::sk::TransientGreenPair> batch(Y.size());
-    hullopt::sk::MakeTransientGreenPairsInFluid(Y.data(), Z.data(), static_cast<int>(Y.size()), half_sqrt_g,
-                                                with_log, batch.data());
-    for (std::size_t k = 0; k < Y.size(); ++k) {
-      const auto one = hullopt::sk::MakeTransientGreenPairInFluid(Y[k], Z[k], half_sqrt_g, with_log);
-      INFO("Y " << Y[k] << " Z " << Z[k] << " with_log " << with_log);
-      CHECK(batch[k].a == one.a);
-      CHECK(batch[k].w == one.w);
-      CHECK(batch[k].log_w == one.log_w);
-      CHECK(batch[k].conj == one.conj);
+    for (std::size_t count : counts) {
+      std::vector<hullopt::sk::TransientGreenPair> batch(count);
+      hullopt::sk::MakeTransientGreenPairsInFluid(Y.data() + (Y.size() - count), Z.data() + (Y.size() - count),
+                                                  static_cast<int>(count), half_sqrt_g, with_log, batch.data());
+      for (std::size_t k = Y.size() - count; k < Y.size(); ++k) {
+        const auto one = hullopt::sk::MakeTransientGreenPairInFluid(Y[k], Z[k], half_sqrt_g, with_log);
+        const auto& b = batch[k - (Y.size() - count)];
+        INFO("Y " << Y[k] << " Z " << Z[k] << " with_log " << with_log << " count " << count);
+        CHECK(b.a == one.a);
+        CHECK(b.w == one.w);
+        CHECK(b.log_w == one.log_w);
+        CHECK(b.conj == one.conj);
+      }
     }
   }
 }
