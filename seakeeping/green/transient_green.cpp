@@ -535,8 +535,16 @@ cd TransientGreenTimeIntegral(double Y, double Z, double t, double g) {
 namespace {
 
 // K inside the table's radius from Φ and F at x.
+// −8a(Φ + xF) + 2gt²(ln x − 2Φ + 2C) in real arithmetic: the products and sums of std::complex's (a finite
+// product is (ac − bd) + i(ad + bc)) without its NaN-recovery branches, so the same bits.
 cd KFromTable(cd x, cd a, double gt2, cd log_x, const PhiAndF& pf) {
-  return -8.0 * a * (pf.phi + x * pf.f) + 2.0 * gt2 * (log_x - 2.0 * pf.phi + 2.0 * kPhiConstant);
+  const double sr = pf.phi.real() + (x.real() * pf.f.real() - x.imag() * pf.f.imag());
+  const double si = pf.phi.imag() + (x.real() * pf.f.imag() + x.imag() * pf.f.real());
+  const double mr = -8.0 * a.real(), mi = -8.0 * a.imag();
+  const double qr = (log_x.real() - 2.0 * pf.phi.real()) + 2.0 * kPhiConstant;
+  const double qi = log_x.imag() - 2.0 * pf.phi.imag();
+  const double k = 2.0 * gt2;
+  return {(mr * sr - mi * si) + k * qr, (mr * si + mi * sr) + k * qi};
 }
 
 // K at x for |Y| (first quadrant), with a = |Z| − i|Y|, gt² [m²] and ln x.

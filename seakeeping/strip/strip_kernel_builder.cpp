@@ -39,8 +39,8 @@ StripKernel BuildStripKernel(const StripOperators& ops, const std::vector<double
       if (n == m) rhs.setIdentity();
       for (int k = m; k < n; ++k) {
         if (ops.PanelCount(k) == 0) continue;
-        if (Pn > 0) rhs.noalias() += ops.Memory(n, k) * S[k];
-        j.noalias() += ops.MomentumMemory(n, k) * S[k];
+        if (Pn > 0) rhs.noalias() += ops.Memory(n, k).lazyProduct(S[k]);
+        j.noalias() += ops.MomentumMemory(n, k).lazyProduct(S[k]);
       }
       S[n] = Pn > 0 ? ops.Solve(n, rhs) : Eigen::MatrixXd(0, Pm);
       if (Pn > 0) j.noalias() += ops.MomentumCurrent(n) * S[n];

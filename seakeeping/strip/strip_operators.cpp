@@ -18,6 +18,12 @@ namespace {
 
 constexpr double kInv2Pi = 0.5 / M_PI;
 
+// Re(a·b) as std::complex computes it for finite values (ac − bd), without the imaginary part and the
+// NaN-recovery branch: the same bits.
+inline double RealOfProduct(std::complex<double> a, std::complex<double> b) {
+  return a.real() * b.real() - a.imag() * b.imag();
+}
+
 // Collocation points (panel mid-points, where the body condition holds) and the field quadrature of ∫φ n_z
 // dl.
 struct FieldSet {
@@ -132,7 +138,7 @@ std::vector<Level> ComputeLevels(const FieldSet& f, const SourceEnds& e, const s
       const std::complex<double> n(f.nz[i], f.ny[i]);
       for (int j = 0; j < ns; ++j) {
         const std::complex<double> c = kInv2Pi * n * e.i_e_minus_ialpha[j];
-        for (int l = 0; l < nl; ++l) out[l].nv(i, j) = (c * (hi[e.second[j] * nl + l] - hi[e.first[j] * nl + l])).real();
+        for (int l = 0; l < nl; ++l) out[l].nv(i, j) = RealOfProduct(c, hi[e.second[j] * nl + l] - hi[e.first[j] * nl + l]);
       }
     }
   }
@@ -157,7 +163,7 @@ std::vector<Level> ComputeLevels(const FieldSet& f, const SourceEnds& e, const s
     const std::complex<double>* hp = &h[static_cast<std::size_t>(p) * ne * nl];
     for (int j = 0; j < ns; ++j)
       for (int l = 0; l < nl; ++l)
-        out[l].pl(j) += f.wnz[p] * (e.i_e_minus_ialpha[j] * (hp[e.second[j] * nl + l] - hp[e.first[j] * nl + l])).real();
+        out[l].pl(j) += f.wnz[p] * RealOfProduct(e.i_e_minus_ialpha[j], hp[e.second[j] * nl + l] - hp[e.first[j] * nl + l]);
   }
   for (auto& level : out) level.pl *= -rho * kInv2Pi;
   return out;
