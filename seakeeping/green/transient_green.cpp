@@ -674,35 +674,35 @@ void TransientGreenSpaceTimeIntegrals2x2(const TransientGreenPair pair[2], const
 
 void TransientGreenTimeIntegrals4x2(const TransientGreenPair pair[4], const double t[2], cd out[8]) {
   cd x[8];
-  bool beyond[8], any_beyond = false;
   for (int n = 0; n < 8; ++n) x[n] = t[n % 2] * pair[n / 2].w;
   constexpr double r2 = kAsymptoticRadius * kAsymptoticRadius;
-  // Points beyond the table's radius go through the asymptotic series one at a time; the table call takes
-  // x = 0 in their place (its result is discarded).
   for (int n = 0; n < 8; ++n)
-    if ((beyond[n] = !(std::norm(x[n]) < r2))) x[n] = 0.0, any_beyond = true;
+    if (!(std::norm(x[n]) < r2)) {
+      TransientGreenTimeIntegrals2x2(pair, t, out);
+      TransientGreenTimeIntegrals2x2(pair + 2, t, out + 4);
+      return;
+    }
   DawsonIntegralTableOnlyP<8>(x, out);
   for (int n = 0; n < 8; ++n) out[n] = ConjIf(pair[n / 2].conj, 8.0 * out[n]);
-  if (any_beyond)
-    for (int n = 0; n < 8; ++n)
-      if (beyond[n]) out[n] = TransientGreenTimeIntegral(pair[n / 2], t[n % 2]);
 }
 
 void TransientGreenSpaceTimeIntegrals4x2(const TransientGreenPair pair[4], const double t[2], const double log_t[2],
                                          double g, cd out[8]) {
-  cd x[8], x_table[8];
-  bool beyond[8];
+  cd x[8];
   for (int n = 0; n < 8; ++n) x[n] = t[n % 2] * pair[n / 2].w;
   constexpr double r2 = kAsymptoticRadius * kAsymptoticRadius;
-  // As in TransientGreenTimeIntegrals4x2: points beyond the radius one at a time through the asymptotic form.
-  for (int n = 0; n < 8; ++n) beyond[n] = !(std::norm(x[n]) < r2), x_table[n] = beyond[n] ? cd(0.0) : x[n];
+  for (int n = 0; n < 8; ++n)
+    if (!(std::norm(x[n]) < r2)) {
+      TransientGreenSpaceTimeIntegrals2x2(pair, t, log_t, g, out);
+      TransientGreenSpaceTimeIntegrals2x2(pair + 2, t, log_t, g, out + 4);
+      return;
+    }
   PhiAndF pf[8];
-  DawsonIntegralTableP<8>(x_table, pf);
+  DawsonIntegralTableP<8>(x, pf);
   for (int n = 0; n < 8; ++n) {
     const TransientGreenPair& pr = pair[n / 2];
     const double tn = t[n % 2];
-    out[n] = beyond[n] ? TransientGreenSpaceTimeIntegral(pr, tn, log_t[n % 2], g)
-                       : ConjIf(pr.conj, KFromTable(x[n], pr.a, g * tn * tn, cd(log_t[n % 2], 0.0) + pr.log_w, pf[n]));
+    out[n] = ConjIf(pr.conj, KFromTable(x[n], pr.a, g * tn * tn, cd(log_t[n % 2], 0.0) + pr.log_w, pf[n]));
   }
 }
 
