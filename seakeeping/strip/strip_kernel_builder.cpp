@@ -32,6 +32,7 @@ StripKernel BuildStripKernel(const StripOperators& ops, const std::vector<double
     const int Pm = ops.PanelCount(m);
     std::vector<Eigen::MatrixXd> S(N);  // S[n] = ∂σ_n/∂V_m, n >= m
     std::vector<Eigen::RowVectorXd> J(N);
+    const Eigen::RowVectorXd zero = Eigen::RowVectorXd::Zero(Pm);  // the momenta before input step m
     for (int n = m; n < N; ++n) {
       const int Pn = ops.PanelCount(n);
       Eigen::MatrixXd rhs = Eigen::MatrixXd::Zero(Pn, Pm);
@@ -45,7 +46,7 @@ StripKernel BuildStripKernel(const StripOperators& ops, const std::vector<double
       S[n] = Pn > 0 ? ops.Solve(n, rhs) : Eigen::MatrixXd(0, Pm);
       if (Pn > 0) j.noalias() += ops.MomentumCurrent(n) * S[n];
       J[n] = j;
-      auto at = [&](int k) { return k >= m ? J[k] : Eigen::RowVectorXd(Eigen::RowVectorXd::Zero(Pm)); };
+      auto at = [&](int k) -> const Eigen::RowVectorXd& { return k >= m ? J[k] : zero; };
       const auto c = ops.ForceStencil(n);
       Eigen::RowVectorXd f;
       if (ops.Force() == SectionalForce::kPressure) {

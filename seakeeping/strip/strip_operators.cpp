@@ -100,14 +100,15 @@ void TableWork(const TransientGreenPair* pairs, int count, const std::vector<dou
 // field-point/end-point offset) is computed once and shared by the lags. Lag 0 gives a zero level. Without
 // `velocity` only pl is computed (nv stays zero). All pairs of a call are prepared in one batch (their square
 // roots and divisions overlap) and their table work runs in groups of four across field points.
-std::vector<Level> ComputeLevels(const FieldSet& f, const SourceEnds& e, const std::vector<double>& lags,
-                                 double g, double rho, bool velocity = true) {
+// Into out[0..nl), whose storage is reused when the sizes repeat (the hot loop calls this ~N²/2 times).
+void ComputeLevelsInto(const FieldSet& f, const SourceEnds& e, const std::vector<double>& lags, double g,
+                       double rho, bool velocity, Level* out) {
   const int nf = static_cast<int>(f.cy.size()), ns = static_cast<int>(e.first.size());
   const int nq = static_cast<int>(f.qy.size());
   const int nl = static_cast<int>(lags.size());
   if (nl < 1 || nl > 2) throw std::logic_error("ComputeLevels: one or two lags");
-  std::vector<Level> out(nl, Level{Eigen::MatrixXd::Zero(velocity ? nf : 0, ns), Eigen::RowVectorXd::Zero(ns)});
-  if (ns == 0) return out;
+  for (int l = 0; l < nl; ++l) out[l].nv.setZero(velocity ? nf : 0, ns), out[l].pl.setZero(ns);
+  if (ns == 0) return;
   const int ne = static_cast<int>(e.y.size());
   double log_lag[2] = {0.0, 0.0};
   for (int l = 0; l < nl; ++l) log_lag[l] = lags[l] > 0.0 ? std::log(lags[l]) : 0.0;
@@ -165,7 +166,13 @@ std::vector<Level> ComputeLevels(const FieldSet& f, const SourceEnds& e, const s
       for (int l = 0; l < nl; ++l)
         out[l].pl(j) += f.wnz[p] * RealOfProduct(e.i_e_minus_ialpha[j], hp[e.second[j] * nl + l] - hp[e.first[j] * nl + l]);
   }
-  for (auto& level : out) level.pl *= -rho * kInv2Pi;
+  for (int l = 0; l < nl; ++l) out[l].pl *= -rho * kInv2Pi;
+}
+
+std::vector<Level> ComputeLevels(const FieldSet& f, const SourceEnds& e, const std::vector<double>& lags,
+                                 double g, double rho, bool velocity = true) {
+  std::vector<Level> out(lags.size());
+  ComputeLevelsInto(f, e, lags, g, rho, velocity, out.data());
   return out;
 }
 
@@ -263,6 +270,17 @@ Eigen::MatrixXd ReduceColumns(const Eigen::MatrixXd& full, const MirrorMap& m) {
     if (m.partner[r] != m.half[r]) out.col(r) += full.col(m.partner[r]);
   }
   return out;
+}
+// A level's columns reduced into *out (storage reused when the sizes repeat), the same sums as above.
+void ReduceLevelInto(const Level& full, const MirrorMap& m, Level* out) {
+  const auto R = static_cast<Eigen::Index>(m.half.size());
+  out->nv.resize(full.nv.rows(), R);
+  out->pl.resize(R);
+  for (Eigen::Index r = 0; r < R; ++r) {
+    out->nv.col(r) = full.nv.col(m.half[r]);
+    if (m.partner[r] != m.half[r]) out->nv.col(r) += full.nv.col(m.partner[r]);
+    out->pl(r) = full.pl(m.half[r]) + (m.partner[r] != m.half[r] ? full.pl(m.partner[r]) : 0.0);
+  }
 }
 Eigen::RowVectorXd ReduceColumns(const Eigen::RowVectorXd& full, const MirrorMap& m) {
   Eigen::RowVectorXd out(static_cast<Eigen::Index>(m.half.size()));
@@ -447,9 +465,13 @@ StripOperators BuildStripOperators(const std::vector<std::vector<Panel>>& panels
         s1 = (n - k - 0.5) * dt;
         s2 = k == 0 ? n * dt : (n - k + 0.5) * dt;
       }
-      std::vector<Level> ab = ComputeLevels(f, ends[k], {s1, s2}, g, rho);
-      const Level a = reduce(std::move(ab[0]), k);
-      const Level b = reduce(std::move(ab[1]), k);
+      thread_local Level full[2], reduced[2];
+      thread_local std::vector<double> lags(2);
+      lags[0] = s1, lags[1] = s2;
+      ComputeLevelsInto(f, ends[k], lags, g, rho, true, full);
+      if (ops.reduced_) ReduceLevelInto(full[0], maps[k], &reduced[0]), ReduceLevelInto(full[1], maps[k], &reduced[1]);
+      const Level& a = ops.reduced_ ? reduced[0] : full[0];
+      const Level& b = ops.reduced_ ? reduced[1] : full[1];
       if (pressure) momentum_level[{k, HalfSteps(s1, dt)}] = a.pl, momentum_level[{k, HalfSteps(s2, dt)}] = b.pl;
       if (k == n) {
         A -= b.nv - a.nv;
