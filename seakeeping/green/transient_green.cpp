@@ -615,95 +615,89 @@ cd TransientGreenSpaceTimeIntegral(double Y, double Z, double t, double g) {
 
 namespace hullopt::sk {
 
-void TransientGreenTimeIntegrals2(const TransientGreenPair& pair, const double t[2], cd out[2]) {
-  const cd x[2] = {t[0] * pair.w, t[1] * pair.w};
-  constexpr double r2 = kAsymptoticRadius * kAsymptoticRadius;
-  if (std::norm(x[0]) < r2 && std::norm(x[1]) < r2) {
-    DawsonIntegralTableOnlyN<2>(x, out);
-    for (int n = 0; n < 2; ++n) out[n] = ConjIf(pair.conj, 8.0 * out[n]);
-    return;
-  }
-  for (int n = 0; n < 2; ++n) out[n] = TransientGreenTimeIntegral(pair, t[n]);
+namespace {
+
+// The table forms for 2P points (P pairs at two lags): the SSE2 two-point form for one pair, the four- or
+// eight-point form (AVX where available) for two or four.
+template <int P>
+void TableOnlyGroup(const cd* x, cd* out) {
+  if constexpr (P == 1) DawsonIntegralTableOnlyN<2>(x, out);
+  else DawsonIntegralTableOnlyP<2 * P>(x, out);
+}
+template <int P>
+void TableGroup(const cd* x, PhiAndF* out) {
+  if constexpr (P == 1) DawsonIntegralTableN<2>(x, out);
+  else DawsonIntegralTableP<2 * P>(x, out);
 }
 
+// P pairs at two lags in one interleaved table call when every x is inside the table's radius; otherwise
+// the two halves (down to one pair, whose points then go one at a time). out[2p + n] is pair[p] at t[n].
+template <int P>
+void TimeIntegralsGroup(const TransientGreenPair* pair, const double t[2], cd* out) {
+  cd x[2 * P];
+  for (int n = 0; n < 2 * P; ++n) x[n] = t[n % 2] * pair[n / 2].w;
+  constexpr double r2 = kAsymptoticRadius * kAsymptoticRadius;
+  for (int n = 0; n < 2 * P; ++n)
+    if (!(std::norm(x[n]) < r2)) {
+      if constexpr (P == 1) {
+        for (int m = 0; m < 2; ++m) out[m] = TransientGreenTimeIntegral(pair[0], t[m]);
+      } else {
+        TimeIntegralsGroup<P / 2>(pair, t, out);
+        TimeIntegralsGroup<P / 2>(pair + P / 2, t, out + P);
+      }
+      return;
+    }
+  TableOnlyGroup<P>(x, out);
+  for (int n = 0; n < 2 * P; ++n) out[n] = ConjIf(pair[n / 2].conj, 8.0 * out[n]);
+}
+
+template <int P>
+void SpaceTimeIntegralsGroup(const TransientGreenPair* pair, const double t[2], const double log_t[2], double g,
+                             cd* out) {
+  cd x[2 * P];
+  for (int n = 0; n < 2 * P; ++n) x[n] = t[n % 2] * pair[n / 2].w;
+  constexpr double r2 = kAsymptoticRadius * kAsymptoticRadius;
+  for (int n = 0; n < 2 * P; ++n)
+    if (!(std::norm(x[n]) < r2)) {
+      if constexpr (P == 1) {
+        for (int m = 0; m < 2; ++m) out[m] = TransientGreenSpaceTimeIntegral(pair[0], t[m], log_t[m], g);
+      } else {
+        SpaceTimeIntegralsGroup<P / 2>(pair, t, log_t, g, out);
+        SpaceTimeIntegralsGroup<P / 2>(pair + P / 2, t, log_t, g, out + P);
+      }
+      return;
+    }
+  PhiAndF pf[2 * P];
+  TableGroup<P>(x, pf);
+  for (int n = 0; n < 2 * P; ++n) {
+    const TransientGreenPair& pr = pair[n / 2];
+    const double tn = t[n % 2];
+    out[n] = ConjIf(pr.conj, KFromTable(x[n], pr.a, g * tn * tn, cd(log_t[n % 2], 0.0) + pr.log_w, pf[n]));
+  }
+}
+
+}  // namespace
+
+void TransientGreenTimeIntegrals2(const TransientGreenPair& pair, const double t[2], cd out[2]) {
+  TimeIntegralsGroup<1>(&pair, t, out);
+}
 void TransientGreenSpaceTimeIntegrals2(const TransientGreenPair& pair, const double t[2], const double log_t[2],
                                        double g, cd out[2]) {
-  const cd x[2] = {t[0] * pair.w, t[1] * pair.w};
-  constexpr double r2 = kAsymptoticRadius * kAsymptoticRadius;
-  if (std::norm(x[0]) < r2 && std::norm(x[1]) < r2) {
-    PhiAndF pf[2];
-    DawsonIntegralTableN<2>(x, pf);
-    for (int n = 0; n < 2; ++n)
-      out[n] = ConjIf(pair.conj, KFromTable(x[n], pair.a, g * t[n] * t[n], cd(log_t[n], 0.0) + pair.log_w, pf[n]));
-    return;
-  }
-  for (int n = 0; n < 2; ++n) out[n] = TransientGreenSpaceTimeIntegral(pair, t[n], log_t[n], g);
+  SpaceTimeIntegralsGroup<1>(&pair, t, log_t, g, out);
 }
-
 void TransientGreenTimeIntegrals2x2(const TransientGreenPair pair[2], const double t[2], cd out[4]) {
-  const cd x[4] = {t[0] * pair[0].w, t[1] * pair[0].w, t[0] * pair[1].w, t[1] * pair[1].w};
-  constexpr double r2 = kAsymptoticRadius * kAsymptoticRadius;
-  for (int n = 0; n < 4; ++n)
-    if (!(std::norm(x[n]) < r2)) {
-      TransientGreenTimeIntegrals2(pair[0], t, out);
-      TransientGreenTimeIntegrals2(pair[1], t, out + 2);
-      return;
-    }
-  DawsonIntegralTableOnlyP<4>(x, out);
-  for (int n = 0; n < 4; ++n) out[n] = ConjIf(pair[n / 2].conj, 8.0 * out[n]);
+  TimeIntegralsGroup<2>(pair, t, out);
 }
-
 void TransientGreenSpaceTimeIntegrals2x2(const TransientGreenPair pair[2], const double t[2], const double log_t[2],
                                          double g, cd out[4]) {
-  const cd x[4] = {t[0] * pair[0].w, t[1] * pair[0].w, t[0] * pair[1].w, t[1] * pair[1].w};
-  constexpr double r2 = kAsymptoticRadius * kAsymptoticRadius;
-  for (int n = 0; n < 4; ++n)
-    if (!(std::norm(x[n]) < r2)) {
-      TransientGreenSpaceTimeIntegrals2(pair[0], t, log_t, g, out);
-      TransientGreenSpaceTimeIntegrals2(pair[1], t, log_t, g, out + 2);
-      return;
-    }
-  PhiAndF pf[4];
-  DawsonIntegralTableP<4>(x, pf);
-  for (int n = 0; n < 4; ++n) {
-    const TransientGreenPair& pr = pair[n / 2];
-    const double tn = t[n % 2];
-    out[n] = ConjIf(pr.conj, KFromTable(x[n], pr.a, g * tn * tn, cd(log_t[n % 2], 0.0) + pr.log_w, pf[n]));
-  }
+  SpaceTimeIntegralsGroup<2>(pair, t, log_t, g, out);
 }
-
 void TransientGreenTimeIntegrals4x2(const TransientGreenPair pair[4], const double t[2], cd out[8]) {
-  cd x[8];
-  for (int n = 0; n < 8; ++n) x[n] = t[n % 2] * pair[n / 2].w;
-  constexpr double r2 = kAsymptoticRadius * kAsymptoticRadius;
-  for (int n = 0; n < 8; ++n)
-    if (!(std::norm(x[n]) < r2)) {
-      TransientGreenTimeIntegrals2x2(pair, t, out);
-      TransientGreenTimeIntegrals2x2(pair + 2, t, out + 4);
-      return;
-    }
-  DawsonIntegralTableOnlyP<8>(x, out);
-  for (int n = 0; n < 8; ++n) out[n] = ConjIf(pair[n / 2].conj, 8.0 * out[n]);
+  TimeIntegralsGroup<4>(pair, t, out);
 }
-
 void TransientGreenSpaceTimeIntegrals4x2(const TransientGreenPair pair[4], const double t[2], const double log_t[2],
                                          double g, cd out[8]) {
-  cd x[8];
-  for (int n = 0; n < 8; ++n) x[n] = t[n % 2] * pair[n / 2].w;
-  constexpr double r2 = kAsymptoticRadius * kAsymptoticRadius;
-  for (int n = 0; n < 8; ++n)
-    if (!(std::norm(x[n]) < r2)) {
-      TransientGreenSpaceTimeIntegrals2x2(pair, t, log_t, g, out);
-      TransientGreenSpaceTimeIntegrals2x2(pair + 2, t, log_t, g, out + 4);
-      return;
-    }
-  PhiAndF pf[8];
-  DawsonIntegralTableP<8>(x, pf);
-  for (int n = 0; n < 8; ++n) {
-    const TransientGreenPair& pr = pair[n / 2];
-    const double tn = t[n % 2];
-    out[n] = ConjIf(pr.conj, KFromTable(x[n], pr.a, g * tn * tn, cd(log_t[n % 2], 0.0) + pr.log_w, pf[n]));
-  }
+  SpaceTimeIntegralsGroup<4>(pair, t, log_t, g, out);
 }
 
 }  // namespace hullopt::sk
