@@ -32,6 +32,8 @@
 #include <optional>
 #include <stdexcept>
 
+#include <yaml-cpp/yaml.h>
+
 #include "app/commands.h"
 #include "app/design_resolution_check.h"
 #include "io/design_defaults.h"
@@ -72,22 +74,27 @@ struct DesignInput {
   double cs_override = -1.0;
 };
 
-// A design to be computed by the strip solver from its own config (root = that config's map): read and
-// checked now, its RAOs computed by ComputePendingRaos once the whole evaluation config has been read, so that
-// an error anywhere in it is reported before the strip work.
-void LoadComputedDesign(io::YamlMap& root, const std::string& file, DesignInput* in, double cs_override) {
-  const eval::DesignCase dc = io::LoadDesignCase(root, file, in->design.name);
-  if (root.Has("compare")) root.Skip("compare");  // measured data drawn by rao/coefficients, not used here
-  root.Finish();
+// A design whose RAOs are computed here by the strip solver from `dc` (read from `file`, whose resolved config
+// is `resolved`): checked now, its RAOs computed by ComputePendingRaos once the whole evaluation config has
+// been read, so that an error anywhere in it is reported before the strip work.
+void SetComputedDesign(const eval::DesignCase& dc, const YAML::Node& resolved, const std::string& file,
+                       const std::string& cost_label, double cs_override, DesignInput* in) {
   in->omega_rad_s = eval::SeaFrequencies(dc);
-  CheckRunCost("evaluate: design '" + in->design.name + "'",
-               io::StripWorkFromResolved(root.resolved(), static_cast<long>(in->omega_rad_s.size())));
+  CheckRunCost(cost_label, io::StripWorkFromResolved(resolved, static_cast<long>(in->omega_rad_s.size())));
   in->computed = dc;
   in->cs_override = cs_override;
   in->design.rao.speed_m_s = dc.speed_m_s;
   in->design.frequency_advice = eval::SeaFrequencyAdvice(dc, file);
   in->design.hull = dc.Extent();
-  for (const auto& [k, v] : dc.Parameters()) in->design.parameters.emplace(k, v);
+  for (const auto& [k, v] : dc.Parameters()) in->design.parameters.emplace(k, v);  // the list's own kept
+}
+
+// A design of the `designs` list given by its own config file (root = that file's map).
+void LoadComputedDesign(io::YamlMap& root, const std::string& file, DesignInput* in, double cs_override) {
+  const eval::DesignCase dc = io::LoadDesignCase(root, file, in->design.name);
+  if (root.Has("compare")) root.Skip("compare");  // measured data drawn by rao/coefficients, not used here
+  root.Finish();
+  SetComputedDesign(dc, root.resolved(), file, "evaluate: design '" + in->design.name + "'", cs_override, in);
 }
 
 void ComputePendingRaos(std::vector<DesignInput>* inputs) {
@@ -179,13 +186,7 @@ void Run(const std::string& config_file, const std::string& out_dir) {
     // Recorded in config.resolved.yaml, so that a re-run keeps the design's name.
     in.design.name = io::ParseDesignName(root, std::filesystem::path(config_file).stem().string());
     const eval::DesignCase dc = io::LoadDesignCase(root, config_file, in.design.name);
-    in.omega_rad_s = eval::SeaFrequencies(dc);
-    CheckRunCost("evaluate", io::StripWorkFromResolved(root.resolved(), static_cast<long>(in.omega_rad_s.size())));
-    in.design.rao.speed_m_s = dc.speed_m_s;
-    in.design.frequency_advice = eval::SeaFrequencyAdvice(dc, config_file);
-    in.design.hull = dc.Extent();
-    in.design.parameters = dc.Parameters();
-    in.computed = dc;
+    SetComputedDesign(dc, root.resolved(), config_file, "evaluate", -1.0, &in);
     inputs.push_back(in);
   } else if (single) {
     inputs.push_back(ReadDesign(root, g, true));
