@@ -96,11 +96,11 @@ void TableWork(const TransientGreenPair* pairs, int count, const std::vector<dou
     for (int l = 0; l < nl; ++l) out[m * nl + l] = lags[l] > 0.0 ? single(pairs[m], l) : 0.0;
 }
 
-// All levels at once: the lag-independent part of the kernel (square roots, division, logarithm of each
-// field-point/end-point offset) is computed once and shared by the lags. Lag 0 gives a zero level. Without
+// The levels of one or two lags into out[0..nl), whose storage is reused when the sizes repeat (the hot loop
+// calls this ~N²/2 times). The lag-independent part of the kernel (square roots, division, logarithm of each
+// field-point/end-point offset) is computed once and shared by the lags; lag 0 gives a zero level. Without
 // `velocity` only pl is computed (nv stays zero). All pairs of a call are prepared in one batch (their square
 // roots and divisions overlap) and their table work runs in groups of four across field points.
-// Into out[0..nl), whose storage is reused when the sizes repeat (the hot loop calls this ~N²/2 times).
 void ComputeLevelsInto(const FieldSet& f, const SourceEnds& e, const std::vector<double>& lags, double g,
                        double rho, bool velocity, Level* out) {
   const int nf = static_cast<int>(f.cy.size()), ns = static_cast<int>(e.first.size());
@@ -262,31 +262,26 @@ bool FindMirrorMaps(const std::vector<std::vector<Panel>>& steps, std::vector<Mi
   return true;
 }
 
-// Columns of the full sources combined into the symmetric (σ_j = σ_j′) reduced sources.
-Eigen::MatrixXd ReduceColumns(const Eigen::MatrixXd& full, const MirrorMap& m) {
-  Eigen::MatrixXd out(full.rows(), static_cast<Eigen::Index>(m.half.size()));
-  for (std::size_t r = 0; r < m.half.size(); ++r) {
-    out.col(r) = full.col(m.half[r]);
-    if (m.partner[r] != m.half[r]) out.col(r) += full.col(m.partner[r]);
-  }
-  return out;
-}
-// A level's columns reduced into *out (storage reused when the sizes repeat), the same sums as above.
-void ReduceLevelInto(const Level& full, const MirrorMap& m, Level* out) {
+// Columns of the full sources combined into the symmetric (σ_j = σ_j′) reduced sources, into *out (storage
+// reused when the sizes repeat: the hot loop reduces every level).
+template <class Dense>
+void ReduceColumnsInto(const Dense& full, const MirrorMap& m, Dense* out) {
   const auto R = static_cast<Eigen::Index>(m.half.size());
-  out->nv.resize(full.nv.rows(), R);
-  out->pl.resize(R);
+  out->resize(full.rows(), R);
   for (Eigen::Index r = 0; r < R; ++r) {
-    out->nv.col(r) = full.nv.col(m.half[r]);
-    if (m.partner[r] != m.half[r]) out->nv.col(r) += full.nv.col(m.partner[r]);
-    out->pl(r) = full.pl(m.half[r]) + (m.partner[r] != m.half[r] ? full.pl(m.partner[r]) : 0.0);
+    out->col(r) = full.col(m.half[r]);
+    if (m.partner[r] != m.half[r]) out->col(r) += full.col(m.partner[r]);
   }
 }
-Eigen::RowVectorXd ReduceColumns(const Eigen::RowVectorXd& full, const MirrorMap& m) {
-  Eigen::RowVectorXd out(static_cast<Eigen::Index>(m.half.size()));
-  for (std::size_t r = 0; r < m.half.size(); ++r)
-    out(r) = full(m.half[r]) + (m.partner[r] != m.half[r] ? full(m.partner[r]) : 0.0);
+template <class Dense>
+Dense ReduceColumns(const Dense& full, const MirrorMap& m) {
+  Dense out;
+  ReduceColumnsInto(full, m, &out);
   return out;
+}
+void ReduceLevelInto(const Level& full, const MirrorMap& m, Level* out) {
+  ReduceColumnsInto(full.nv, m, &out->nv);
+  ReduceColumnsInto(full.pl, m, &out->pl);
 }
 
 void CheckPanels(const std::vector<Panel>& panels, int step) {
