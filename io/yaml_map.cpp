@@ -5,31 +5,68 @@
 #include <fstream>
 #include <sstream>
 
+#include <yaml-cpp/eventhandler.h>
+
 #include "io/utf8_text.h"
 
 namespace hullopt::io {
 namespace {
 
-// yaml-cpp 0.7 never returns from a document whose first token is ',' (found by fuzzing: one line "," hangs
-// the parser). No config can begin that way (',' is a flow indicator), so such a document is refused here,
-// before the parser sees it.
-void RefuseLeadingComma(const std::string& text, const std::string& file) {
+// yaml-cpp 0.7 never returns from YAML::LoadAll when a ',' stands where a document's node should begin: at the
+// start of the file, or after a top-level mapping that ends because a line is indented less than its first key
+// ("  a: 1\n," loops forever, adding empty documents until memory runs out; found by fuzzing). The parser itself
+// stops after each document, so the documents are counted here with an event handler that records where the
+// second one begins, and no more than two are asked for.
+class SecondDocumentMark : public YAML::EventHandler {
+ public:
+  int documents = 0;
+  YAML::Mark second;  // where the second document's first node begins (line -1 if there is none)
+
+  void OnDocumentStart(const YAML::Mark&) override { ++documents; }
+  void OnDocumentEnd() override {}
+  void OnNull(const YAML::Mark& m, YAML::anchor_t) override { Note(m); }
+  void OnAlias(const YAML::Mark& m, YAML::anchor_t) override { Note(m); }
+  void OnScalar(const YAML::Mark& m, const std::string&, YAML::anchor_t, const std::string&) override { Note(m); }
+  void OnSequenceStart(const YAML::Mark& m, const std::string&, YAML::anchor_t, YAML::EmitterStyle::value) override {
+    Note(m);
+  }
+  void OnSequenceEnd() override {}
+  void OnMapStart(const YAML::Mark& m, const std::string&, YAML::anchor_t, YAML::EmitterStyle::value) override {
+    Note(m);
+  }
+  void OnMapEnd() override {}
+
+ private:
+  bool noted_ = false;
+  void Note(const YAML::Mark& m) {
+    if (documents == 2 && !noted_) {
+      second = m;
+      noted_ = true;
+    }
+  }
+};
+
+// What stands at the second document's mark says which mistake the user made.
+std::string SecondDocumentRule(const std::string& text, const YAML::Mark& at) {
+  const bool comma = at.pos >= 0 && static_cast<std::size_t>(at.pos) < text.size() && text[at.pos] == ',';
+  if (comma) return "YAML syntax error: a ',' (a flow indicator) outside any [ ] or { } list";
   std::istringstream in(text);
   std::string line;
-  bool at_document_start = true;
-  for (int lineno = 1; std::getline(in, line); ++lineno) {
-    std::size_t a = line.find_first_not_of(" \t\r");
-    if (a == std::string::npos || line[a] == '#' || (at_document_start && line[a] == '%')) continue;
-    if (line.compare(a, 3, "---") == 0) {
-      at_document_start = true;
-      a = line.find_first_not_of(" \t\r", a + 3);
-      if (a == std::string::npos || line[a] == '#') continue;
-    }
-    if (at_document_start && line[a] == ',')
-      throw InputError(file + ":" + std::to_string(lineno) +
-                       ": YAML syntax error: a document cannot begin with ',' (a flow indicator)");
-    at_document_start = false;
-  }
+  for (int lineno = 0; std::getline(in, line) && lineno < at.line; ++lineno)
+    if (line.compare(0, 3, "---") == 0) return "a second YAML document ('---' separator); a config file holds one document";
+  return "this line is indented less than the config's first key, so it lies outside the config's mapping "
+         "(indent all top-level keys alike)";
+}
+
+void RefuseSecondDocument(const std::string& text, const std::string& file) {
+  std::istringstream in(text);
+  YAML::Parser parser(in);
+  SecondDocumentMark handler;
+  int documents = 0;
+  while (documents < 2 && parser.HandleNextDocument(handler)) ++documents;
+  if (documents < 2) return;
+  const std::string line = handler.second.line >= 0 ? std::to_string(handler.second.line + 1) : std::string("?");
+  throw InputError(file + ":" + line + ": " + SecondDocumentRule(text, handler.second));
 }
 std::string Line(const YAML::Node& n) {
   const auto m = n.Mark();
@@ -108,18 +145,14 @@ YamlMap YamlMap::LoadFile(const std::string& file) {
   std::ostringstream text;
   text << in.rdbuf();
   RequireUtf8(text.str(), file);
-  RefuseLeadingComma(text.str(), file);
-  std::vector<YAML::Node> docs;
+  YAML::Node root;
   try {
-    docs = YAML::LoadAll(text.str());
+    RefuseSecondDocument(text.str(), file);
+    root = YAML::Load(text.str());
   } catch (const YAML::Exception& e) {
     throw InputError(file + ":" + std::to_string(e.mark.line + 1) + ": YAML syntax error: " + e.msg);
   }
-  if (docs.size() > 1)
-    throw InputError(file + ":" + Line(docs[1]) +
-                     ": a second YAML document ('---' separator); a config file holds one document");
-  if (docs.empty() || !docs[0] || docs[0].IsNull()) throw InputError(file + ": config file is empty");
-  const YAML::Node root = docs[0];
+  if (!root || root.IsNull()) throw InputError(file + ": config file is empty");
   if (!root.IsMap()) throw InputError(file + ":" + Line(root) + ": the config must be a mapping of key: value pairs");
   CheckKeys(root, file);
   return YamlMap(root, "", file, YAML::Node(YAML::NodeType::Map));

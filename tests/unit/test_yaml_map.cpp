@@ -61,6 +61,12 @@ TEST_CASE("duplicate keys, second documents and non-text keys are refused with t
   CHECK_THROWS_WITH(load("v: {!L: [8, 16]}\n"), Catch::Contains(":1: a key must be plain text"));
   CHECK_THROWS_WITH(load("- 1\n- 2\n"), Catch::Contains("must be a mapping"));
   CHECK_NOTHROW(load("---\na: 1\nb: {c: 1, d: 2}\n"));  // a leading document marker is one document
+  // A ',' where a document's node begins makes yaml-cpp's LoadAll loop forever; each is refused at its line.
+  CHECK_THROWS_WITH(load(",\na: 1\n"), Catch::Contains(":1: YAML syntax error: a ','"));
+  CHECK_THROWS_WITH(load("  a: 1\n,\n"), Catch::Contains(":2: YAML syntax error: a ','"));
+  CHECK_THROWS_WITH(load("  a: |\n    x\n, y\n"), Catch::Contains(":3: YAML syntax error: a ','"));
+  CHECK_THROWS_WITH(load("    a: 1\n  b: 2\n"), Catch::Contains(":2: this line is indented less"));
+  CHECK_NOTHROW(load("  a: [1\n, 2]\n  b: \"x\n, y\"\n"));  // a ',' inside a list or a quoted text is data
   std::remove(file.c_str());
 }
 
