@@ -20,7 +20,7 @@ namespace {
 class SecondDocumentMark : public YAML::EventHandler {
  public:
   int documents = 0;
-  YAML::Mark second;  // where the second document's first node begins (line -1 if there is none)
+  YAML::Mark second = YAML::Mark::null_mark();  // where the second document's first node begins
 
   void OnDocumentStart(const YAML::Mark&) override { ++documents; }
   void OnDocumentEnd() override {}
@@ -37,12 +37,8 @@ class SecondDocumentMark : public YAML::EventHandler {
   void OnMapEnd() override {}
 
  private:
-  bool noted_ = false;
   void Note(const YAML::Mark& m) {
-    if (documents == 2 && !noted_) {
-      second = m;
-      noted_ = true;
-    }
+    if (documents == 2 && second.is_null()) second = m;
   }
 };
 
@@ -53,7 +49,8 @@ std::string SecondDocumentRule(const std::string& text, const YAML::Mark& at) {
   std::istringstream in(text);
   std::string line;
   for (int lineno = 0; std::getline(in, line) && lineno < at.line; ++lineno)
-    if (line.compare(0, 3, "---") == 0) return "a second YAML document ('---' separator); a config file holds one document";
+    if (line.compare(0, 3, "---") == 0)
+      return "a second YAML document ('---' separator); a config file holds one document";
   return "this line is indented less than the config's first key, so it lies outside the config's mapping "
          "(indent all top-level keys alike)";
 }
@@ -62,9 +59,9 @@ void RefuseSecondDocument(const std::string& text, const std::string& file) {
   std::istringstream in(text);
   YAML::Parser parser(in);
   SecondDocumentMark handler;
-  int documents = 0;
-  while (documents < 2 && parser.HandleNextDocument(handler)) ++documents;
-  if (documents < 2) return;
+  while (handler.documents < 2 && parser.HandleNextDocument(handler)) {
+  }
+  if (handler.documents < 2) return;
   const std::string line = handler.second.line >= 0 ? std::to_string(handler.second.line + 1) : std::string("?");
   throw InputError(file + ":" + line + ": " + SecondDocumentRule(text, handler.second));
 }
