@@ -19,6 +19,7 @@ void EvaluateInOrder(
   std::mutex mutex;
   std::exception_ptr error;
   const int nthreads = evaluator.IsThreadSafe() ? std::max(1, threads) : 1;
+  (void)nthreads;  // read only by the OpenMP pragma; a build without OpenMP runs in order
 #pragma omp parallel for schedule(dynamic, 1) num_threads(nthreads)
   for (int k = 0; k < count; ++k) {
     {
