@@ -21,12 +21,20 @@ B = integral b33 dx at U = 0 (Parseval), which the script prints as a check. The
 B_3D / B_2D+t is the 3D far-field effect on the damping for given sources; it does not include the change of
 the sources themselves (near field, interaction between hulls).
 
-Usage: scripts/farfield_3d_damping.py SECTION_CONFIG X_AFT_M X_FWD_M STATIONS PANELS U_M_S OMEGA_E_RAD_S...
+With --pair SPACING_M a second, identical line at that lateral spacing is added (a catamaran; heave, so both
+in phase): the lateral factor |2 cos(k_y s/2)|^2 then multiplies the integrand, k_y = Omega^2/g for 2D+t and
+sqrt(K^2 - k_x^2) for 3D, and the script prints B_pair / (2 B_single) for each. The sources stay those of the
+demihull alone, so this is the far-field interference only: in a steady 2D catamaran section the sources
+themselves change with the gap, which this does not model.
+
+Usage: scripts/farfield_3d_damping.py [--pair SPACING_M] SECTION_CONFIG X_AFT_M X_FWD_M STATIONS PANELS U_M_S
+                                     OMEGA_E_RAD_S...
   SECTION_CONFIG: a `hullopt section` config of one section (shape: offsets, count: 1); its x_m, panels,
   method and frequencies are replaced. e.g.
   scripts/farfield_3d_damping.py examples/section_delft372_station.yaml 0 3.0 45 28 4.07 5.0 6.5 8.6 11.0
 Binary: $HULLOPT (default build/app/hullopt). Needs python3-numpy and python3-yaml.
 """
+import argparse
 import csv
 import os
 import subprocess
@@ -77,8 +85,9 @@ def cosine_nodes(a, b, n):
     return x, wu * (b - a) * 0.5 * np.pi * np.sin(np.pi * u)
 
 
-def damping(x, q, omega, U, kmax, n_per_interval=400):
-    """(B_2D+t, B_3D) in kg/s for the line source q(x) at encounter frequency omega and speed U."""
+def damping(x, q, omega, U, kmax, spacing=None, n_per_interval=400):
+    """(B_2D+t, B_3D) in kg/s for the line source q(x) at encounter frequency omega and speed U; with spacing
+    [m], for two such lines that far apart."""
     # Ends of the 3D wave-free band (Omega^2 = g |k_x|), where S is singular.
     cuts = [-kmax, kmax]
     for sign in (+1.0, -1.0):  # k_x > 0: (omega - U k)^2 = g k; k_x < 0 with k = |k_x|: (omega + U k)^2 = g k
@@ -97,19 +106,30 @@ def damping(x, q, omega, U, kmax, n_per_interval=400):
         Q2 = np.abs(line_spectrum(x, q, k)) ** 2
         Om = omega - U * k
         K = Om * Om / G
-        s3 = np.where(K > np.abs(k), K / np.sqrt(np.maximum(K * K - k * k, 1e-300)), 0.0)
-        b2 += np.sum(w * Q2 * 2.0 * np.abs(Om))
-        b3 += np.sum(w * Q2 * 2.0 * np.abs(Om) * s3)
+        ky3 = np.sqrt(np.maximum(K * K - k * k, 0.0))
+        s3 = np.where(K > np.abs(k), K / np.maximum(ky3, 1e-300), 0.0)
+        f2 = f3 = 1.0
+        if spacing is not None:  # both lines in phase: |exp(i k_y s/2) + exp(-i k_y s/2)|^2
+            f2 = 4.0 * np.cos(0.5 * K * spacing) ** 2
+            f3 = 4.0 * np.cos(0.5 * ky3 * spacing) ** 2
+        b2 += np.sum(w * Q2 * 2.0 * np.abs(Om) * f2)
+        b3 += np.sum(w * Q2 * 2.0 * np.abs(Om) * s3 * f3)
     return b2 / (4 * np.pi * omega), b3 / (4 * np.pi * omega)
 
 
 def main():
-    if len(sys.argv) < 8:
-        print(__doc__)
-        return 2
-    cfg_path, x_aft, x_fwd = sys.argv[1], float(sys.argv[2]), float(sys.argv[3])
-    stations, panels, U = int(sys.argv[4]), int(sys.argv[5]), float(sys.argv[6])
-    omegas = [float(w) for w in sys.argv[7:]]
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("--pair", type=float, metavar="SPACING_M", help="add a second line at this spacing")
+    ap.add_argument("config")
+    ap.add_argument("x_aft", type=float)
+    ap.add_argument("x_fwd", type=float)
+    ap.add_argument("stations", type=int)
+    ap.add_argument("panels", type=int)
+    ap.add_argument("U", type=float, help="speed [m/s]")
+    ap.add_argument("omegas", type=float, nargs="+", help="encounter frequencies [rad/s]")
+    a = ap.parse_args()
+    cfg_path, x_aft, x_fwd, stations, panels, U, omegas = (a.config, a.x_aft, a.x_fwd, a.stations, a.panels,
+                                                           a.U, a.omegas)
     root = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
     hullopt = os.path.abspath(os.environ.get("HULLOPT", os.path.join(root, "build/app/hullopt")))
     with open(cfg_path) as f:
@@ -130,15 +150,20 @@ def main():
     xs, b33 = np.array(xs), np.array(b33)
     print(f"# {stations} stations x {panels} panels over x = {x_aft}..{x_fwd} m, U = {U} m/s; "
           f"{int(np.sum(b33[:, 0] > 0))} sections solved")
+    pair_head = ",pair_over_2single_2Dt,pair_over_2single_3D" if a.pair is not None else ""
     print("omega_e_rad_s,tau,int_b33_dx_kg_s,B_2Dt_U0_kg_s,B_2Dt_kg_s,B_3D_kg_s,B_3D_over_B_2Dt,"
-          "B_3D_over_B_2Dt_kmax_doubled")
+          "B_3D_over_B_2Dt_kmax_doubled" + pair_head)
     for j, w in enumerate(omegas):
         q = np.sqrt(b33[:, j])
         int_b = np.trapz(b33[:, j], xs)
         b0, _ = damping(xs, q, w, 0.0, 400.0)
         b2, b3 = damping(xs, q, w, U, 400.0)
         b2d, b3d = damping(xs, q, w, U, 800.0)
-        print(f"{w:g},{U * w / G:.3f},{int_b:.2f},{b0:.2f},{b2:.2f},{b3:.2f},{b3 / b2:.4f},{b3d / b2d:.4f}")
+        row = f"{w:g},{U * w / G:.3f},{int_b:.2f},{b0:.2f},{b2:.2f},{b3:.2f},{b3 / b2:.4f},{b3d / b2d:.4f}"
+        if a.pair is not None:
+            p2, p3 = damping(xs, q, w, U, 400.0, a.pair)
+            row += f",{p2 / (2 * b2):.4f},{p3 / (2 * b3):.4f}"
+        print(row)
     return 0
 
 
