@@ -2,6 +2,7 @@
 
 #include <yaml-cpp/yaml.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -11,7 +12,7 @@
 #include <vector>
 
 #include "io/config_path.h"
-#include "io/csv_fields.h"
+#include "io/history_csv.h"
 #include "io/input_error.h"
 #include "io/svg_plot.h"
 #include "io/yaml_map.h"
@@ -53,31 +54,25 @@ std::string PointName(int k) {
   return name;
 }
 
-// Appends the feasible, evaluated rows of history.csv to *out (variables: the columns between `evaluation`
-// and `objective`, whose names go to *names).
+// Appends the feasible, evaluated rows of history.csv to *out (the names of its design variables go to
+// *names). The file is read as a campaign reads it on resume, so a damaged row is refused with its line.
 void ReadFeasible(const std::string& path, const std::string& source, const std::string& quantity,
                   std::vector<std::string>* names, std::vector<Record>* out) {
-  std::ifstream f(path);
-  std::string line;
-  if (!f || !std::getline(f, line)) throw io::InputError(path + ": missing after the run");
-  const std::vector<std::string> head = io::SplitCsvLine(line);
-  auto column = [&](const std::string& n) -> size_t {
-    for (size_t j = 0; j < head.size(); ++j)
-      if (head[j] == n) return j;
-    throw io::InputError(path + ": no column '" + n + "'");
-  };
-  const size_t c_obj = column("objective"), c_feas = column("feasible"), c_q = column(quantity);
-  names->assign(head.begin() + 1, head.begin() + static_cast<long>(c_obj));
-  while (std::getline(f, line)) {
-    const std::vector<std::string> c = io::SplitCsvLine(line);
-    if (c.size() != head.size() || c[c_feas] != "1") continue;
+  const io::HistoryLayout layout = io::ReadHistoryLayout(path);
+  const auto q = std::find(layout.quantities.begin(), layout.quantities.end(), quantity);
+  if (q == layout.quantities.end()) throw io::InputError(path + ": no column '" + quantity + "'");
+  const auto iq = static_cast<std::size_t>(q - layout.quantities.begin());
+  *names = layout.variables;
+  for (const io::HistoryRow& row : io::ReadHistory(path, layout).rows) {
+    const opt::EvaluationRecord& rec = row.record;
+    if (!rec.feasible || !rec.result.produced) continue;
     Record r;
-    r.objective = std::stod(c[c_obj]);
-    r.q = std::stod(c[c_q]);
+    r.objective = rec.result.objective;
+    r.q = row.reported[iq];
     if (!std::isfinite(r.objective) || !std::isfinite(r.q)) continue;
-    for (size_t j = 1; j < c_obj; ++j) r.x.push_back(std::stod(c[j]));
+    r.x = rec.x;
     r.source = source;
-    r.evaluation = std::stol(c[0]);
+    r.evaluation = row.evaluation;
     out->push_back(std::move(r));
   }
 }

@@ -3,6 +3,7 @@
 #include <fcntl.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cmath>
 #include <cstdio>
@@ -157,6 +158,26 @@ HistoryRow ParseHistoryRow(const std::string& line, const HistoryLayout& layout,
     row.reported.clear();
   }
   return row;
+}
+
+HistoryLayout ReadHistoryLayout(const std::string& path) {
+  std::ifstream in(path);
+  std::string header;
+  if (!in || !std::getline(in, header)) throw InputError(path + ": missing or empty");
+  const std::vector<std::string> c = Split(header);
+  const std::vector<std::string> tail{"wall_time_s", "run", "step", "message"};
+  std::size_t objective = 1;
+  while (objective + 1 < c.size() && !(c[objective] == "objective" && c[objective + 1] == "feasible")) ++objective;
+  const std::size_t results_begin = objective + 2;
+  if (c.empty() || c[0] != "evaluation" || results_begin + tail.size() > c.size() ||
+      !std::equal(tail.begin(), tail.end(), c.end() - static_cast<long>(tail.size())))
+    throw InputError(path + ":1: not a history file (columns evaluation, <variables>, objective, feasible, ..., " +
+                     "wall_time_s, run, step, message)");
+  HistoryLayout layout;
+  layout.variables.assign(c.begin() + 1, c.begin() + static_cast<long>(objective));
+  layout.quantities.assign(c.begin() + static_cast<long>(results_begin),
+                           c.end() - static_cast<long>(tail.size()));
+  return layout;
 }
 
 HistoryFile ReadHistory(const std::string& path, const HistoryLayout& layout) {

@@ -54,6 +54,13 @@ HistoryFile ReadHistory(const std::string& path, const HistoryLayout& layout);
 /// Parses one complete row (without its newline). `where` prefixes error messages ("file:line").
 HistoryRow ParseHistoryRow(const std::string& line, const HistoryLayout& layout, const std::string& where);
 
+/// The layout a history/samples file declares in its header line, for a reader that does not know the campaign
+/// that wrote it (the Pareto sweep's summary). The header does not tell the per-sea columns from the
+/// constrained quantities, so all the columns between `feasible` and `wall_time_s` come back as `quantities`
+/// (`seas` empty); ReadHistory with it then puts their values in HistoryRow::reported. Throws InputError
+/// (naming the file) if the file is missing or its header lacks the fixed columns.
+HistoryLayout ReadHistoryLayout(const std::string& path);
+
 /// ReadHistory on text already in memory (e.g. broadcast from MPI rank 0); path is used in messages.
 HistoryFile ParseHistory(const std::string& text, const std::string& path, const HistoryLayout& layout);
 

@@ -119,3 +119,29 @@ TEST_CASE("a log of another campaign or a damaged log is refused", "[history][ba
   CHECK_FALSE(io::ParseHistory("", "h.csv", layout).exists);
   CHECK_FALSE(io::ParseHistory("evaluation,L_ov", "h.csv", layout).exists);  // killed in the header
 }
+
+TEST_CASE("a reader without the campaign takes the layout from the header", "[history]") {
+  const auto layout = Layout();
+  const auto a = Rec(0.25, 0.5, true);
+  const std::string path = TempPath("history_layout_test.csv");
+  {
+    std::ofstream f(path);
+    f << layout.Header() << "\n" << io::FormatHistoryRow(0, a, {42.0}, layout);
+  }
+  const io::HistoryLayout read = io::ReadHistoryLayout(path);
+  CHECK(read.variables == layout.variables);
+  CHECK(read.seas.empty());  // the header does not tell seas from quantities: both come back as quantities
+  CHECK(read.quantities == std::vector<std::string>{"msi_sea1_pct", "L_m"});
+  const auto rows = io::ReadHistory(path, read).rows;
+  REQUIRE(rows.size() == 1);
+  CHECK(rows[0].record.x == a.x);
+  CHECK(rows[0].reported == std::vector<double>{a.result.sea_values[0], 42.0});
+
+  {
+    std::ofstream f(path);
+    f << "evaluation,L_over_B,objective,wall_time_s,run,step,message\n";  // no `feasible`
+  }
+  CHECK_THROWS_WITH(io::ReadHistoryLayout(path), Catch::Contains("history_layout_test.csv:1: not a history file"));
+  std::remove(path.c_str());
+  CHECK_THROWS_WITH(io::ReadHistoryLayout(path), Catch::Contains("missing or empty"));
+}
