@@ -169,7 +169,7 @@ HistoryLayout ReadHistoryLayout(const std::string& path) {
   std::size_t objective = 1;
   while (objective + 1 < c.size() && !(c[objective] == "objective" && c[objective + 1] == "feasible")) ++objective;
   const std::size_t results_begin = objective + 2;
-  if (c.empty() || c[0] != "evaluation" || results_begin + tail.size() > c.size() ||
+  if (c[0] != "evaluation" || results_begin + tail.size() > c.size() ||
       !std::equal(tail.begin(), tail.end(), c.end() - static_cast<long>(tail.size())))
     throw InputError(path + ":1: not a history file (columns evaluation, <variables>, objective, feasible, ..., " +
                      "wall_time_s, run, step, message)");

@@ -17,12 +17,13 @@ Usage:
 Options (environment): OMEGA (rad/s), PANELS (space-separated), HULLOPT (binary, default build/app/hullopt).
 """
 import csv
-import json
 import math
 import os
 import subprocess
 import sys
 import tempfile
+
+from generated_hull import first_body_stations
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 
@@ -83,21 +84,14 @@ def main():
     work = tempfile.mkdtemp(prefix="bulb_sections_")
     cases = []  # (label, offsets, x, draught)
     if sys.argv[1] == "stations":
-        subprocess.run([hullopt, "hull", sys.argv[2], "--out", os.path.join(work, "hull")], check=True,
-                       stdout=subprocess.DEVNULL)
-        with open(os.path.join(work, "hull", "hydrostatics.json")) as f:
-            T = json.load(f)["T_m"]
-        offsets = os.path.join(work, "hull", "offsets.csv")
-        with open(offsets) as f:
-            rows = list(csv.DictReader(l for l in f if not l.startswith("#")))
-        first = rows[0].get("body", "")
-        xs = sorted({float(r["x_m"]) for r in rows if r.get("body", "") == first})
+        T, stations = first_body_stations(hullopt, sys.argv[2], work)
+        xs = sorted(stations)
         body = os.path.join(work, "body.csv")
         with open(body, "w") as f:
             f.write("x_m,y_m,z_m\n")
-            for r in rows:
-                if r.get("body", "") == first:
-                    f.write(f"{r['x_m']},{r['y_m']},{r['z_m']}\n")
+            for x, points in stations.items():
+                for y, z in points:
+                    f.write(f"{x!r},{y!r},{z!r}\n")
         for want in sys.argv[3:]:
             x = min(xs, key=lambda v: abs(v - float(want)))
             cases.append((f"station x = {x:.2f} m", body, x, T))

@@ -12,13 +12,12 @@ Usage: scripts/waterline_narrowing_check.py HULL_CONFIG X_SPLIT_M OMEGA_RAD_S SE
   e.g. scripts/waterline_narrowing_check.py configs/davis-holloway-2003/hull05_S64.yaml 32.5 0.7 40 14 28 56
 Binary: $HULLOPT (default build/app/hullopt).
 """
-import collections
-import csv
-import json
 import os
 import subprocess
 import sys
 import tempfile
+
+from generated_hull import first_body_stations
 
 def main():
     if len(sys.argv) < 6:
@@ -29,21 +28,7 @@ def main():
     root = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
     hullopt = os.path.abspath(os.environ.get("HULLOPT", os.path.join(root, "build/app/hullopt")))
     work = tempfile.mkdtemp(prefix="wl_narrowing_")
-    subprocess.run([hullopt, "hull", cfg, "--out", os.path.join(work, "hull")], check=True,
-                   stdout=subprocess.DEVNULL)
-    with open(os.path.join(work, "hull", "hydrostatics.json")) as f:
-        hydro = json.load(f)
-    T = hydro["T_m"]
-    stations = collections.OrderedDict()
-    first_body = None
-    with open(os.path.join(work, "hull", "offsets.csv")) as f:
-        for r in csv.DictReader(row for row in f if not row.startswith("#")):
-            body = r.get("body", "")
-            if first_body is None:
-                first_body = body
-            if body != first_body:
-                continue
-            stations.setdefault(float(r["x_m"]), []).append((float(r["y_m"]), float(r["z_m"])))
+    T, stations = first_body_stations(hullopt, cfg, work)
     xs = sorted(stations)
     xm = min(xs, key=lambda x: abs(x - x_split))
     mid = stations[xm]
