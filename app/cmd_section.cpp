@@ -33,11 +33,13 @@ struct MethodCurve {
   std::vector<double> omega, a33, b33;  ///< [rad/s], [kg/m], [kg/(m·s)]
 };
 
-MethodCurve RunFrequencyDomain(const Strip& strip, const io::SectionRunConfig& cfg) {
+// The frequency-domain solver, source formulation ("frequency_domain") or direct ("frequency_domain_direct").
+MethodCurve RunFrequencyDomain(const Strip& strip, const io::SectionRunConfig& cfg, const std::string& method) {
   sk::FrequencyDomainOptions opt;
   opt.rho_kg_m3 = cfg.rho_kg_m3;
   opt.g_m_s2 = cfg.g_m_s2;
-  MethodCurve c{"frequency_domain", cfg.omegas_rad_s, {}, {}};
+  if (method == "frequency_domain_direct") opt.formulation = sk::SectionFormulation::kDirect;
+  MethodCurve c{method, cfg.omegas_rad_s, {}, {}};
   for (const auto& h : sk::SolveSectionFrequencyDomain(strip, cfg.omegas_rad_s, opt)) {
     c.a33.push_back(h.a33());
     c.b33.push_back(h.b33());
@@ -64,7 +66,8 @@ MethodCurve RunTimeDomain(const Strip& strip, const io::SectionRunConfig& cfg, c
 
 MethodCurve RunMethod(const std::string& method, const Strip& strip, const io::SectionRunConfig& cfg,
                       const std::string& config_file) {
-  if (method == "frequency_domain") return RunFrequencyDomain(strip, cfg);
+  if (method == "frequency_domain" || method == "frequency_domain_direct")
+    return RunFrequencyDomain(strip, cfg, method);
   return RunTimeDomain(strip, cfg, config_file);
 }
 

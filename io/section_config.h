@@ -9,7 +9,7 @@
 //     count: 1              # sections side by side in the strip ...
 //     spacing_m: 3.0        # ... at this centre spacing (required when count > 1)
 //     panels: 28            # per section, even (default 28)
-//     method: [frequency_domain]   # and/or time_domain
+//     method: [frequency_domain]   # and/or frequency_domain_direct, time_domain
 //     frequencies: { omega_rad_s: [0.5, 1.0, 2.0] }   # or { omega_min_rad_s: 0.5, omega_max_rad_s: 5, count: 20 }
 //   water: { rho_kg_m3: 1025, g_m_s2: 9.81 }
 #include <string>
@@ -22,7 +22,7 @@ namespace hullopt::io {
 
 struct SectionRunConfig {
   sk::SectionStripSpec strip;
-  std::vector<std::string> methods;  ///< "frequency_domain", "time_domain" in the order given
+  std::vector<std::string> methods;  ///< "frequency_domain", "frequency_domain_direct", "time_domain" in the order given
   std::vector<double> omegas_rad_s;  ///< [rad/s] increasing order as given
   double rho_kg_m3 = 1025.0;
   double g_m_s2 = 9.81;

@@ -14,7 +14,8 @@ Usage:
   scripts/bulb_section_convergence.py stations configs/davis-holloway-2003/hull11_SW3.yaml 42 65.2 77.8 82
   scripts/bulb_section_convergence.py bulb 1.0 1.8 0.25
   scripts/bulb_section_convergence.py bulb 1.491 2.11 0.373 0.5
-Options (environment): OMEGA (rad/s), PANELS (space-separated), HULLOPT (binary, default build/app/hullopt).
+Options (environment): OMEGA (rad/s), PANELS (space-separated), HULLOPT (binary, default build/app/hullopt),
+METHOD (the `hullopt section` method: frequency_domain, the default, or frequency_domain_direct).
 """
 import csv
 import math
@@ -28,11 +29,11 @@ from generated_hull import first_body_stations
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 
 
-def run_section(offsets, x, draught, panels, omega, hullopt, work):
+def run_section(offsets, x, draught, panels, omega, hullopt, work, method):
     cfg = os.path.join(work, f"s{panels}.yaml")
     with open(cfg, "w") as f:
         f.write(f"section: {{ shape: offsets, offsets_csv: {offsets}, x_m: {x!r}, draught_m: {draught!r}, "
-                f"panels: {panels}, method: [frequency_domain], frequencies: {{ omega_rad_s: [{omega}] }} }}\n"
+                f"panels: {panels}, method: [{method}], frequencies: {{ omega_rad_s: [{omega}] }} }}\n"
                 "water: { rho_kg_m3: 1025, g_m_s2: 9.81 }\n")
     out = tempfile.mkdtemp(prefix=f"o{panels}_", dir=work)
     subprocess.run([hullopt, "section", cfg, "--out", out], check=True, stdout=subprocess.DEVNULL)
@@ -80,6 +81,7 @@ def main():
         return 2
     hullopt = os.path.abspath(os.environ.get("HULLOPT", os.path.join(ROOT, "build/app/hullopt")))
     omega = float(os.environ.get("OMEGA", "0.9"))
+    method = os.environ.get("METHOD", "frequency_domain")
     panels = [int(p) for p in os.environ.get("PANELS", "14 28 56 112 224").split()]
     work = tempfile.mkdtemp(prefix="bulb_sections_")
     cases = []  # (label, offsets, x, draught)
@@ -106,9 +108,9 @@ def main():
     else:
         print(__doc__)
         return 2
-    print(f"a33 [kg/m] at omega {omega} rad/s, panels {' / '.join(map(str, panels))}")
+    print(f"{method}: a33 [kg/m] at omega {omega} rad/s, panels {' / '.join(map(str, panels))}")
     for label, offsets, x, T in cases:
-        a = [run_section(offsets, x, T, p, omega, hullopt, work) for p in panels]
+        a = [run_section(offsets, x, T, p, omega, hullopt, work, method) for p in panels]
         print(f"{label}: " + " / ".join(f"{v:.1f}" for v in a) +
               f"  ({100 * (a[0] / a[-1] - 1):+.1f} % at {panels[0]} against {panels[-1]})")
     return 0

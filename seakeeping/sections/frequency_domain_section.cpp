@@ -225,6 +225,38 @@ void AssembleRows(const StripPanels& sp, const std::vector<int>& fields, const s
   }
 }
 
+// The direct formulation's matrices (SectionFormulation::kDirect): at each body midpoint and each lid
+// midpoint (rows, body first), the single-layer influence S = (1/2π)∫_j G ds and the double-layer influence
+// D = (1/2π)∫_j ∂G/∂n_ξ ds of every body panel j (columns), n_ξ its normal into the fluid; ½ on the diagonal
+// of the body rows. G depends on ξ = (η, ζ) through y − η in all three parts and through z − ζ (ln r) or
+// z + ζ (ln r′, wave part), so ∇_ξ of the parts is (−∂_y, −∂_z), (−∂_y, +∂_z), (−∂_y, +∂_z) of the field
+// gradients that the source formulation already integrates. A body panel's own ln r part has no normal
+// derivative on its own line (the flat chord's principal value is zero) and no tangential one at its
+// midpoint, so its self term is the ½ alone; no curvature term enters (that corrects the source density's
+// normal-velocity operator, which this formulation does not use).
+void AssembleDirectRows(const StripPanels& sp, double nu, const GaussRule& rule, int max_depth, Eigen::MatrixXcd* D,
+                        Eigen::MatrixXcd* S) {
+  const double two_log_nu = 2.0 * std::log(nu);
+  const int rows = sp.n, nb = sp.nb;
+  for (int i = 0; i < rows; ++i) {
+    double y, z;
+    FieldPoint(sp, i, &y, &z);
+    for (int j = 0; j < nb; ++j) {
+      const Panel& p = sp.body[j];
+      const SourceInfluence r = RankinePanelInfluence(p, y, z);
+      const SourceInfluence im = ImagePanelInfluence(p, y, z);
+      Influence w{};
+      IntegrateSmooth(nu, two_log_nu, y, z, p.y1, p.z1, p.y2, p.z2, 0, rule, max_depth, &w);
+      const C wvy = kInv2Pi * w.vy, wvz = kInv2Pi * w.vz;
+      const bool self = i == j;
+      const double rvy = self ? 0.0 : r.vy, rvz = self ? 0.0 : r.vz;
+      const auto nrm = p.Normal();
+      (*D)(i, j) = nrm[0] * (-rvy - im.vy - wvy) + nrm[1] * (-rvz + im.vz + wvz) + (self ? 0.5 : 0.0);
+      (*S)(i, j) = r.phi + im.phi + kInv2Pi * w.phi;
+    }
+  }
+}
+
 }  // namespace
 
 bool FrequencyDomainOptions::IsValid(std::string* error) const {
@@ -260,26 +292,55 @@ SectionHydrodynamics SolveSectionFrequencyDomain(const std::vector<std::vector<P
   const std::vector<Panel>& body = sp.body;
   const int nb = sp.nb, n = sp.n;
   auto source = [&](int j) -> const Panel& { return sp.Source(j); };
-  std::vector<int> fields(n);
-  for (int i = 0; i < n; ++i) fields[i] = i;
-  Eigen::MatrixXcd A(n, n);          // system: body rows ∂φ/∂n, lid rows ∂φ/∂z + νφ from below
-  Eigen::MatrixXcd Phi_body(nb, n);  // potential at body midpoints
-  AssembleRows(sp, fields, RankineRows(sp, fields), nu, rule, opt.max_subdivision, &A, &Phi_body);
 
-  // Right-hand sides: three radiation modes (unit velocity) and the beam-sea diffraction problem.
+  // Body normal velocities: three radiation modes (unit velocity) and the beam-sea diffraction problem.
   const C ig_over_omega(0.0, g / omega);  // φ_I = (ig/ω) e^{νz − iνy} per unit wave amplitude
-  Eigen::MatrixXcd rhs = Eigen::MatrixXcd::Zero(n, 4);
+  Eigen::MatrixXcd vn(nb, 4);
   for (int i = 0; i < nb; ++i) {
     const Panel& p = body[i];
     const auto nrm = p.Normal();
     const double y = p.MidY(), z = p.MidZ();
-    for (int j = 0; j < 3; ++j) rhs(i, j) = ModeNormal(j, nrm[0], nrm[1], y, z);
+    for (int j = 0; j < 3; ++j) vn(i, j) = ModeNormal(j, nrm[0], nrm[1], y, z);
     const C e = std::exp(C(nu * z, -nu * y));
-    rhs(i, 3) = -ig_over_omega * nu * C(nrm[1], -nrm[0]) * e;  // −∂φ_I/∂n
+    vn(i, 3) = -ig_over_omega * nu * C(nrm[1], -nrm[0]) * e;  // −∂φ_I/∂n
   }
-  const Eigen::PartialPivLU<Eigen::MatrixXcd> lu(A);
-  const Eigen::MatrixXcd sigma = lu.solve(rhs);
-  const Eigen::MatrixXcd phi = Phi_body * sigma;  // potentials at body midpoints
+  Eigen::MatrixXcd phi;  // potentials at body midpoints, one column per problem
+  // Far field: φ → i e^{νz} e^{∓iνy} Σ_j ∫_j s±_j(m) e^{νζ ± iνη} ds for y → ±∞ over the panels j of
+  // `far_panels`: s± the source density, or V − φ ν(n_z ± i n_y) in the direct formulation (the far field of
+  // G and of its normal derivative at ξ).
+  Eigen::MatrixXcd far_plus, far_minus;
+  int far_panels = n;
+  if (opt.formulation == SectionFormulation::kDirect) {
+    Eigen::MatrixXcd D(n, nb), S(n, nb);
+    AssembleDirectRows(sp, nu, rule, opt.max_subdivision, &D, &S);
+    const Eigen::MatrixXcd rhs = S * vn;
+    phi = sp.nl == 0 ? Eigen::MatrixXcd(Eigen::PartialPivLU<Eigen::MatrixXcd>(D).solve(rhs))
+                     : Eigen::MatrixXcd(D.colPivHouseholderQr().solve(rhs));
+    far_panels = nb;
+    far_plus.resize(nb, 4);
+    far_minus.resize(nb, 4);
+    for (int j = 0; j < nb; ++j) {
+      const auto nrm = body[j].Normal();
+      const C up = nu * C(nrm[1], nrm[0]), um = nu * C(nrm[1], -nrm[0]);
+      for (int m = 0; m < 4; ++m) {
+        far_plus(j, m) = vn(j, m) - phi(j, m) * up;
+        far_minus(j, m) = vn(j, m) - phi(j, m) * um;
+      }
+    }
+  } else {
+    std::vector<int> fields(n);
+    for (int i = 0; i < n; ++i) fields[i] = i;
+    Eigen::MatrixXcd A(n, n);          // system: body rows ∂φ/∂n, lid rows ∂φ/∂z + νφ from below
+    Eigen::MatrixXcd Phi_body(nb, n);  // potential at body midpoints
+    AssembleRows(sp, fields, RankineRows(sp, fields), nu, rule, opt.max_subdivision, &A, &Phi_body);
+    Eigen::MatrixXcd rhs = Eigen::MatrixXcd::Zero(n, 4);
+    rhs.topRows(nb) = vn;
+    const Eigen::PartialPivLU<Eigen::MatrixXcd> lu(A);
+    const Eigen::MatrixXcd sigma = lu.solve(rhs);
+    phi = Phi_body * sigma;
+    far_plus = sigma;
+    far_minus = sigma;
+  }
 
   SectionHydrodynamics out;
   out.omega_rad_s = omega;
@@ -310,16 +371,16 @@ SectionHydrodynamics SolveSectionFrequencyDomain(const std::vector<std::vector<P
     out.exciting_force[j] = loads.froude_krylov[j] + C(0.0, omega * rho) * diff;
     out.exciting_force_haskind[j] = loads.froude_krylov[j] + loads.diffraction[j];
   }
-  // Far field: φ → i e^{νz} e^{∓iνy} Σ_j σ_j ∫_j e^{νζ ± iνη} ds for y → ±∞; elevation per unit motion iν K±.
+  // Far-field elevation per unit motion iν K± (K± the sums above).
   for (int m = 0; m < 3; ++m) {
     C kp = 0.0, km = 0.0;
-    for (int j = 0; j < n; ++j) {
+    for (int j = 0; j < far_panels; ++j) {
       const Panel& p = source(j);
       const double L = p.Length();
       for (std::size_t q = 0; q < rule.t.size(); ++q) {
         const double eta = p.y1 + rule.t[q] * (p.y2 - p.y1), zeta = p.z1 + rule.t[q] * (p.z2 - p.z1);
-        kp += sigma(j, m) * rule.w[q] * L * std::exp(C(nu * zeta, nu * eta));
-        km += sigma(j, m) * rule.w[q] * L * std::exp(C(nu * zeta, -nu * eta));
+        kp += far_plus(j, m) * rule.w[q] * L * std::exp(C(nu * zeta, nu * eta));
+        km += far_minus(j, m) * rule.w[q] * L * std::exp(C(nu * zeta, -nu * eta));
       }
     }
     out.far_wave_plus[m] = C(0.0, nu) * kp;
@@ -371,6 +432,7 @@ struct SectionHeaveSolver::Data {
   std::vector<int> fields;   // field points (and, when symmetric, the unknowns) solved for: body first
   int body_fields = 0;       // how many of `fields` are body panels
   std::vector<RankineSum> rankine;
+  std::vector<std::vector<Panel>> sections;  // kept for SectionFormulation::kDirect, solved in full
 };
 
 namespace {
@@ -407,7 +469,10 @@ SectionHeaveSolver::SectionHeaveSolver(const std::vector<std::vector<Panel>>& se
   for (int j = 0; j < d->sp.n; ++j)
     if (d->mirror.empty() || j <= d->mirror[j]) d->fields.push_back(j);
   for (int j : d->fields) d->body_fields += j < d->sp.nb;
-  d->rankine = RankineRows(d->sp, d->fields);
+  if (opt.formulation == SectionFormulation::kDirect)
+    d->sections = sections;
+  else
+    d->rankine = RankineRows(d->sp, d->fields);
   data_ = std::move(d);
 }
 
@@ -418,6 +483,8 @@ Eigen::VectorXcd SectionHeaveSolver::HeavePotential(double omega) const {
     throw std::invalid_argument("frequency-domain solver: omega = " + std::to_string(omega) +
                                 " rad/s must be > 0");
   const Data& d = *data_;
+  if (d.options.formulation == SectionFormulation::kDirect)
+    return SolveSectionFrequencyDomain(d.sections, omega, d.options).radiation_potential.col(1);
   const StripPanels& sp = d.sp;
   const double nu = omega * omega / d.options.g_m_s2;
   const auto nf = static_cast<Eigen::Index>(d.fields.size()), nfb = static_cast<Eigen::Index>(d.body_fields);

@@ -3,8 +3,9 @@
 // independent check of the time-domain strip solver and the basis of conventional strip theory (Salvesen,
 // Tuck & Faltinsen 1970).
 //
-// Method: constant-strength source panels with the pulsating-source Green function of deep water
-// (frequency_domain_green.h), collocation at panel midpoints. The ln r + ln r' part of every panel integral
+// Method: constant-strength source panels (or, with SectionFormulation::kDirect, the body potential from
+// Green's second identity) with the pulsating-source Green function of deep water (frequency_domain_green.h),
+// collocation at panel midpoints. The ln r + ln r' part of every panel integral
 // is in closed form (rankine_panel.h); the smooth wave part is integrated with Gauss–Legendre on sub-segments
 // refined towards the image of the field point and to a fraction of a wavelength. Irregular frequencies are
 // removed with the extended boundary condition of the source formulation: source panels on each section's
@@ -31,9 +32,26 @@
 
 namespace hullopt::sk {
 
+/// How the body boundary-value problem is discretised (constant strength per panel, collocation at the panel
+/// midpoints in both).
+enum class SectionFormulation {
+  /// A source distribution on the body (and the lid): the strip solvers' formulation. Its density is the jump
+  /// between the exterior flow and an interior one, which is singular at a re-entrant corner of the body (a
+  /// strut meeting a bulb, interior angle above 180°), so constant panels converge only at first order there.
+  kSource,
+  /// Green's second identity for the body potential itself: ½φ_i + Σ_j φ_j ∫_j ∂G/∂n_ξ ds = Σ_j V_j ∫_j G ds,
+  /// V the body's normal velocity. The potential stays bounded and smooth at re-entrant corners (it is the
+  /// exterior flow alone), and the chords of a curved contour need no curvature term. Irregular frequencies:
+  /// the same lid points as kSource, where Green's representation must vanish (they lie outside the fluid),
+  /// added as extra rows and the overdetermined system solved in least squares (the extended boundary
+  /// condition of the direct formulation).
+  kDirect,
+};
+
 struct FrequencyDomainOptions {
   double rho_kg_m3 = 1025.0;  ///< [kg/m³] water density
   double g_m_s2 = 9.81;       ///< [m/s²] gravity
+  SectionFormulation formulation = SectionFormulation::kSource;
   /// Lid panels per section on the interior free surface (irregular-frequency removal). −1: automatic (half
   /// the section's body panels, at least 4); 0: no lid — then results are wrong near the irregular
   /// frequencies.
@@ -95,7 +113,8 @@ bool MirrorImagePanels(const std::vector<Panel>& a, const std::vector<Panel>& b,
 /// partner to 1e-12 of the strip's size, as PanelSymmetricSection and symmetric multihulls make them) is
 /// solved on one half: the heave potential is symmetric, so the source densities of mirror panels are equal
 /// and the system has the rows and columns of one half only (collocation at that half's points). Otherwise
-/// the full system. Same validation and exceptions as SolveSectionFrequencyDomain; thread-safe const use.
+/// the full system (SectionFormulation::kDirect: the full solve at each frequency). Same validation and
+/// exceptions as SolveSectionFrequencyDomain; thread-safe const use.
 class SectionHeaveSolver {
  public:
   SectionHeaveSolver(const std::vector<std::vector<Panel>>& sections, const FrequencyDomainOptions& options);
