@@ -103,6 +103,15 @@ SolverConfig ParseSolverConfig(YamlMap& s, bool frequencies_required) {
     p.Finish();
   }
   o.interaction = s.Boolean("interaction", o.interaction);
+  // Read (and recorded) only when given, so that configs without it resolve as before.
+  if (s.Has("section_formulation")) {
+    o.section_formulation = s.Choice("section_formulation", {"source", "direct"}, "source") == "direct"
+                                ? sk::SectionFormulation::kDirect
+                                : sk::SectionFormulation::kSource;
+    if (o.section_formulation == sk::SectionFormulation::kDirect && o.method != Method::kStripTheory)
+      s.Fail("section_formulation", "direct applies to method: strip_theory_stf only (the time-domain strip "
+                                    "kernel has the source formulation)");
+  }
   o.layout = s.Choice("stations", {"cell_faces", "cell_midpoints"}, "cell_faces") == "cell_midpoints"
                  ? sk::StationLayout::kCellMidpoints
                  : sk::StationLayout::kCellFaces;

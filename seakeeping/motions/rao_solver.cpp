@@ -37,6 +37,12 @@ bool RaoSolverOptions::IsValid(std::string* error) const {
   if (!Geometry().IsValid(error)) return false;
   if (!motion.IsValid(error)) return false;
   if (path == Path::kTimeMarching && !marching.IsValid(error)) return false;
+  if (section_formulation == SectionFormulation::kDirect && method != Method::kStripTheory) {
+    if (error)
+      *error = "section_formulation: direct applies to method: strip_theory_stf only (the time-domain strip "
+               "kernel has the source formulation)";
+    return false;
+  }
   return true;
 }
 
@@ -73,7 +79,8 @@ RaoTable ComputeRaos(const hull::HullForm& hull, const hull::MassProperties& mas
     const StripKernel geometry = StripKernelGeometry(hull, g, speed_m_s, rho_kg_m3, g_m_s2);
     const HeadSeaShipModel model(geometry, mass, options.motion);
     RaoTable t = SolveStripTheoryRaos(model, omega_rad_s,
-                                      FrequencyDomainSectionRows(geometry, options.panels, options.interaction));
+                                      FrequencyDomainSectionRows(geometry, options.panels, options.interaction,
+                                                                 options.section_formulation));
     RequireFiniteRaos(t);
     t.warnings = RaoResonanceWarnings(t);
     return t;
@@ -129,7 +136,8 @@ CoefficientTable ComputeCoefficients(const hull::HullForm& hull, const hull::Mas
   if (options.method == RaoSolverOptions::Method::kStripTheory) {
     const HeadSeaShipModel model(kernel, mass, options.motion);
     t.rows = StripTheoryCoefficients(model, omega_rad_s,
-                                     FrequencyDomainSectionRows(kernel, options.panels, options.interaction));
+                                     FrequencyDomainSectionRows(kernel, options.panels, options.interaction,
+                                                                options.section_formulation));
   } else {
     kernel = BuildHullStripKernel(hull, options, speed_m_s, rho_kg_m3, g_m_s2, builder);
     const HeadSeaShipModel model(kernel, mass, options.motion);

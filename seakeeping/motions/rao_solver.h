@@ -14,6 +14,7 @@
 #include "seakeeping/strip/strip_geometry.h"
 #include "seakeeping/strip/strip_operators.h"
 #include "seakeeping/motions/time_marching_motion.h"
+#include "seakeeping/sections/frequency_domain_section.h"
 
 namespace hullopt::sk {
 
@@ -34,6 +35,9 @@ struct RaoSolverOptions {
   StationLayout layout = kDefaultStationLayout;  ///< where the strip steps sit (strip_kernel.h)
   PanelSpacing spacing;  ///< how each section's panels are spread over its girth (panel.h)
   bool interaction = true;  ///< multihull bodies share the strips; false: each body alone, forces added
+  /// How strip theory's 2D sections are solved (frequency_domain_section.h). The time-domain strip kernel has
+  /// the source formulation only, so kDirect is valid with Method::kStripTheory alone.
+  SectionFormulation section_formulation = SectionFormulation::kSource;
   Path path = Path::kPeriodic;
   MotionOptions motion;      ///< Cs, hull name
   MarchingOptions marching;  ///< time marching only

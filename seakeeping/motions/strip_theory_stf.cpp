@@ -27,7 +27,7 @@ Eigen::RowVectorXcd UniformHeaveRow(const std::vector<Panel>& panels, double a33
 }
 
 SectionRowProvider FrequencyDomainSectionRows(const StripKernel& geometry, int panels_per_body,
-                                              bool interaction) {
+                                              bool interaction, SectionFormulation formulation) {
   if (panels_per_body < 1)
     throw std::invalid_argument("FrequencyDomainSectionRows: panels_per_body must be >= 1");
   // Per step: the section solvers (one strip with every body, or one per body), prepared once on first use
@@ -47,7 +47,7 @@ SectionRowProvider FrequencyDomainSectionRows(const StripKernel& geometry, int p
   auto cache = std::make_shared<Cache>();
   for (std::size_t n = 0; n < geometry.panels.size(); ++n) cache->steps.push_back(std::make_unique<Step>());
   const StripKernel* g = &geometry;
-  return [cache, g, panels_per_body, interaction](int n, double omega_e) -> Eigen::RowVectorXcd {
+  return [cache, g, panels_per_body, interaction, formulation](int n, double omega_e) -> Eigen::RowVectorXcd {
     {
       std::lock_guard<std::mutex> lock(cache->mutex);
       const auto it = cache->rows.find({n, omega_e});
@@ -67,6 +67,7 @@ SectionRowProvider FrequencyDomainSectionRows(const StripKernel& geometry, int p
         FrequencyDomainOptions o;
         o.rho_kg_m3 = g->rho_kg_m3;
         o.g_m_s2 = g->g_m_s2;
+        o.formulation = formulation;
         if (interaction) {
           step.solvers.emplace_back(sections, o);
           step.bodies.emplace_back(0, false);

@@ -20,6 +20,7 @@
 #include "seakeeping/motions/head_sea_coefficients.h"
 #include "seakeeping/motions/head_sea_ship_model.h"
 #include "seakeeping/motions/rao_table.h"
+#include "seakeeping/sections/frequency_domain_section.h"
 #include "seakeeping/strip/strip_kernel.h"
 
 namespace hullopt::sk {
@@ -37,9 +38,12 @@ Eigen::RowVectorXcd UniformHeaveRow(const std::vector<Panel>& panels, double a33
 /// Rows from the 2D frequency-domain panel solver (frequency_domain_section.h) for the sections of `geometry`
 /// (each step's panels in consecutive groups of panels_per_body, one group per body): R_i = iω_e ρ ψ_i l_i
 /// with ψ the heave radiation potential per unit velocity. Solves each (step, ω_e) once and caches it.
-/// interaction: all bodies of a step in one 2D problem; false: each body alone. geometry must outlive it.
+/// interaction: all bodies of a step in one 2D problem; false: each body alone. formulation: how each
+/// section's potential is solved for (SectionFormulation; kDirect resolves strut-bulb junctions at 14
+/// panels, frequency_domain_section.h). geometry must outlive it.
 SectionRowProvider FrequencyDomainSectionRows(const StripKernel& geometry, int panels_per_body,
-                                              bool interaction = true);
+                                              bool interaction = true,
+                                              SectionFormulation formulation = SectionFormulation::kSource);
 
 /// The coefficients of the strip-theory equations at each wave frequency (head_sea_coefficients.h), from the
 /// same rows and strip grid as SolveStripTheoryRaos. Throws std::invalid_argument for a bad frequency.

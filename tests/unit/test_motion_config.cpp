@@ -124,3 +124,27 @@ TEST_CASE("solver.panel_spacing: read only when given, into the strip geometry; 
   CHECK_THROWS_WITH(bad("panel_spacing: { grading: 20 }\n"), Catch::Contains("solver.panel_spacing.grading"));
   CHECK_THROWS_WITH(bad("panel_spacing: { ends: 0.1 }\n"), Catch::Contains("ends"));
 }
+
+TEST_CASE("solver.section_formulation: read only when given, strip theory only", "[config]") {
+  auto plain = FromText("method: strip_theory_stf\nfrequencies: { omega_rad_s: [1.0] }\n");
+  const auto d = hullopt::io::ParseSolverConfig(plain);
+  CHECK_FALSE(plain.resolved()["section_formulation"]);  // configs without it resolve as before
+  CHECK(d.rao.section_formulation == hullopt::sk::SectionFormulation::kSource);
+  auto given = FromText("method: strip_theory_stf\nsection_formulation: direct\nfrequencies: { omega_rad_s: [1.0] }\n");
+  CHECK(hullopt::io::ParseSolverConfig(given).rao.section_formulation == hullopt::sk::SectionFormulation::kDirect);
+  auto bad = [](const std::string& text) {
+    auto m = FromText(text + "frequencies: { omega_rad_s: [1.0] }\n");
+    hullopt::io::ParseSolverConfig(m);
+  };
+  CHECK_THROWS_WITH(bad("section_formulation: direct\n"),
+                    Catch::Contains("solver.section_formulation") && Catch::Contains("strip_theory_stf only"));
+  CHECK_THROWS_WITH(bad("method: strip_theory_stf\nsection_formulation: dipole\n"),
+                    Catch::Contains("solver.section_formulation"));
+  hullopt::sk::RaoSolverOptions o;
+  o.section_formulation = hullopt::sk::SectionFormulation::kDirect;
+  std::string err;
+  CHECK_FALSE(o.IsValid(&err));  // the time-domain method is the default
+  CHECK_THAT(err, Catch::Contains("strip_theory_stf only"));
+  o.method = hullopt::sk::RaoSolverOptions::Method::kStripTheory;
+  CHECK(o.IsValid(&err));
+}

@@ -24,6 +24,7 @@
 #include "seakeeping/green/frequency_domain_green.h"
 #include "seakeeping/sections/frequency_domain_section.h"
 #include "seakeeping/sections/section_shapes.h"
+#include "support/ursell_semicircle.h"
 
 using namespace hullopt::sk;
 using C = std::complex<double>;
@@ -56,60 +57,10 @@ Coefficients Panels(int n, double nuR, int lid = -1, SectionFormulation form = S
   return {h.a33() / kM0, h.b33() / (kM0 * w)};
 }
 
-// Ursell's multipole solution for the heaving semicircle, unit heave velocity, time factor e^{iωt}. θ from
-// the downward vertical, ζ = d + iy with depth d = −z: r^{−n} cos nθ = Re ζ^{−n}.
+// Ursell's multipole solution (support/ursell_semicircle.h), in the units of Coefficients.
 Coefficients Ursell(double nuR, int multipoles = 14, int collocation = 60) {
-  const double nu = nuR / kR;
-  const int nu_unknowns = multipoles + 1;
-  // Basis function k at (y, z): value and ∂/∂r.
-  auto basis = [&](int k, double y, double z, C* value, C* d_dr) {
-    if (k == 0) {
-      const auto g = PulsatingSourceGreen(nu, y, z, 0.0, 0.0);  // outgoing source at the origin (inside)
-      *value = g.value;
-      *d_dr = (y * g.dy + z * g.dz) / std::hypot(y, z);
-      return;
-    }
-    const int m = k;
-    const C zeta(-z, y);
-    const double a2m = std::pow(kR, 2 * m);
-    const double c = nu * a2m / (2 * m - 1);
-    const C F = a2m * std::pow(zeta, -2 * m) + c * std::pow(zeta, -(2 * m - 1));
-    const C dF = -2.0 * m * a2m * std::pow(zeta, -2 * m - 1) - (2.0 * m - 1) * c * std::pow(zeta, -2 * m);
-    // Re F: ∂/∂d = Re F', ∂/∂y = −Im F'; ∂/∂z = −∂/∂d.
-    const double ddd = dF.real(), ddy = -dF.imag();
-    *value = F.real();
-    const double r = std::hypot(y, z);
-    *d_dr = (y * ddy + z * (-ddd)) / r;
-  };
-  Eigen::MatrixXcd A(collocation, nu_unknowns);
-  Eigen::VectorXcd rhs(collocation);
-  for (int i = 0; i < collocation; ++i) {
-    const double th = 0.5 * M_PI * (i + 0.5) / collocation;
-    const double y = kR * std::sin(th), z = -kR * std::cos(th);
-    for (int k = 0; k < nu_unknowns; ++k) {
-      C v, dr;
-      basis(k, y, z, &v, &dr);
-      A(i, k) = dr;
-    }
-    rhs(i) = -std::cos(th);  // ∂φ/∂r = n_z (normal into the fluid = radial)
-  }
-  const Eigen::VectorXcd c = A.colPivHouseholderQr().solve(rhs);
-  // ∫ ψ n_z ds over the whole semicircle = 2 ∫_0^{π/2} ψ(R, θ)(−cos θ) R dθ (midpoint rule, 4000 points).
-  C integral = 0.0;
-  const int nq = 4000;
-  for (int i = 0; i < nq; ++i) {
-    const double th = 0.5 * M_PI * (i + 0.5) / nq;
-    const double y = kR * std::sin(th), z = -kR * std::cos(th);
-    C psi = 0.0;
-    for (int k = 0; k < nu_unknowns; ++k) {
-      C v, dr;
-      basis(k, y, z, &v, &dr);
-      psi += c(k) * v;
-    }
-    integral += 2.0 * psi * (-std::cos(th)) * kR * (0.5 * M_PI / nq);
-  }
-  const double w = std::sqrt(nuR * kG / kR);
-  return {-kRho * integral.real() / kM0, kRho * w * integral.imag() / (kM0 * w)};
+  const auto u = hullopt::testing::UrsellSemicircleHeave(nuR, multipoles, collocation);
+  return {u.a33, u.b33};
 }
 
 }  // namespace

@@ -11,6 +11,7 @@
 #include "seakeeping/strip/strip_geometry.h"
 #include "seakeeping/motions/strip_theory_stf.h"
 #include "support/delft372_hull.h"
+#include "support/ursell_semicircle.h"
 
 namespace sk = hullopt::sk;
 
@@ -31,6 +32,40 @@ TEST_CASE("section row: R·n_z = −(iω a33 + b33)", "[stf][sections]") {
     // The row integrates ψ at panel midpoints (one-point rule); the solver's a33/b33 use the same potentials:
     // agreement to the midpoint-quadrature level of the potential, 1e-6 relative.
     CHECK(std::abs(rn - expect) < 1e-6 * std::abs(expect));
+  }
+}
+
+TEST_CASE("section rows, direct formulation: the solver's a33 and b33, and Ursell's at 14 panels",
+          "[stf][sections][direct]") {
+  // The same reciprocity row on the direct formulation's potential, then against Ursell's multipole solution
+  // (independent of the panel solvers) at the strips' default 14 panels: a33 within 1 %, b33 within 2 % up
+  // to νR = 1 and 4 % above (the section solver's own tolerances for this formulation, where 7 panels a side
+  // resolve the waterline region of depth 1/ν with two or three panels; verification_frequency_domain_section).
+  constexpr double kRho = 1025.0, kG = 9.81, kR = 1.0;
+  constexpr double kTolRow = 1e-6, kTolA = 0.01, kTolB = 0.02, kTolBHigh = 0.04;
+  sk::StripKernel g;
+  g.rho_kg_m3 = kRho;
+  g.g_m_s2 = kG;
+  g.panels = {sk::PanelSymmetricSection(sk::SemicircleContour(kR, 4000), 14)};
+  const auto rows = sk::FrequencyDomainSectionRows(g, 14, true, sk::SectionFormulation::kDirect);
+  const double m0 = kRho * M_PI * kR * kR / 2;
+  for (double nuR : {0.25, 0.5, 1.0, 2.0, 3.0}) {
+    const double w = std::sqrt(nuR * kG / kR);
+    const auto r = rows(0, w);
+    std::complex<double> rn = 0;
+    for (std::size_t i = 0; i < g.panels[0].size(); ++i) rn += r[i] * g.panels[0][i].Normal()[1];
+    sk::FrequencyDomainOptions o;
+    o.rho_kg_m3 = kRho;
+    o.g_m_s2 = kG;
+    o.formulation = sk::SectionFormulation::kDirect;
+    const auto h = sk::SolveSectionFrequencyDomain(g.panels, w, o);
+    const std::complex<double> expect(-h.b33(), -w * h.a33());
+    INFO("nuR = " << nuR);
+    CHECK(std::abs(rn - expect) < kTolRow * std::abs(expect));
+    const auto u = hullopt::testing::UrsellSemicircleHeave(nuR);
+    const double a = -rn.imag() / w / m0, b = -rn.real() / (m0 * w);
+    CHECK(std::fabs(a / u.a33 - 1) <= kTolA);
+    CHECK(std::fabs(b / u.b33 - 1) <= (nuR <= 1.0 ? kTolB : kTolBHigh));
   }
 }
 
