@@ -41,6 +41,9 @@ void RunRao(const std::string& config_file, const std::string& out_dir) {
   const std::string kernel_kind =
       solver_map.Choice("kernel", {"transient_green", "impulsive"}, "transient_green");
   const io::SolverConfig sc = io::ParseSolverConfig(solver_map);
+  if (kernel_kind == "impulsive" && sc.body_potential != sk::BodyPotential::kSourceSum)
+    solver_map.Fail("body_potential", "the impulsive stand-in kernel has the source sum only (use kernel: "
+                                      "transient_green)");
   if (kernel_kind == "impulsive" && sc.sectional_force == sk::SectionalForce::kPressure)
     solver_map.Fail("sectional_force", "the impulsive stand-in kernel has the momentum form only (use kernel: "
                                        "transient_green)");
@@ -67,7 +70,7 @@ void RunRao(const std::string& config_file, const std::string& out_dir) {
   }
   const sk::StripKernelBuilder builder = kernel_kind == "impulsive"
                                              ? sk::StripKernelBuilder(sk::FillImpulsiveStripKernel)
-                                             : sk::TransientGreenKernelBuilder(sc.sectional_force);
+                                             : sk::TransientGreenKernelBuilder(sc.sectional_force, sc.body_potential);
   const sk::RaoSolverOptions o = eval::RaoOptions(sc, hull_name, sc.cs());
   const auto omega = sk::WaveFrequencies(sc.frequencies, U, water.g_m_s2, hs.L_m);
   CheckOutputDirConfig(out_dir, "rao", root.resolved());

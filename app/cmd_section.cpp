@@ -48,14 +48,18 @@ MethodCurve RunFrequencyDomain(const Strip& strip, const io::SectionRunConfig& c
 }
 
 // The time-domain strip solver: transient Green function, forced harmonic heave of all sections in the strip
-// run to steady state (seakeeping/td_heave_coefficients.h).
-MethodCurve RunTimeDomain(const Strip& strip, const io::SectionRunConfig& cfg, const std::string& config_file) {
+// run to steady state (seakeeping/td_heave_coefficients.h); "time_domain_green_identity": the current sources'
+// potential from Green's identity (sk::BodyPotential::kGreenIdentity).
+MethodCurve RunTimeDomain(const Strip& strip, const io::SectionRunConfig& cfg, const std::string& method,
+                          const std::string& config_file) {
   std::vector<sk::Panel> panels;
   for (const auto& section : strip) panels.insert(panels.end(), section.begin(), section.end());
-  MethodCurve c{"time_domain", cfg.omegas_rad_s, {}, {}};
+  MethodCurve c{method, cfg.omegas_rad_s, {}, {}};
+  sk::TimeDomainSectionOptions opt;
+  if (method == "time_domain_green_identity") opt.operators.body_potential = sk::BodyPotential::kGreenIdentity;
   try {
     const sk::HeaveCoefficients h =
-        sk::TimeDomainHeaveCoefficients(panels, cfg.omegas_rad_s, cfg.rho_kg_m3, cfg.g_m_s2);
+        sk::TimeDomainHeaveCoefficients(panels, cfg.omegas_rad_s, cfg.rho_kg_m3, cfg.g_m_s2, opt);
     c.a33 = h.a33_kg_per_m;
     c.b33 = h.b33_kg_per_m_s;
   } catch (const std::invalid_argument& e) {
@@ -68,7 +72,7 @@ MethodCurve RunMethod(const std::string& method, const Strip& strip, const io::S
                       const std::string& config_file) {
   if (method == "frequency_domain" || method == "frequency_domain_direct")
     return RunFrequencyDomain(strip, cfg, method);
-  return RunTimeDomain(strip, cfg, config_file);
+  return RunTimeDomain(strip, cfg, method, config_file);
 }
 
 void WriteCsv(const std::vector<MethodCurve>& curves, const std::string& path) {
@@ -128,7 +132,8 @@ void RunSection(const std::string& config_file, const std::string& out_dir) {
     throw io::InputError(config_file + ": section: " + e.what());
   }
   CheckOutputDirConfig(out_dir, "section", root.resolved());
-  if (std::find(cfg.methods.begin(), cfg.methods.end(), "time_domain") != cfg.methods.end()) {
+  if (std::find(cfg.methods.begin(), cfg.methods.end(), "time_domain") != cfg.methods.end() ||
+      std::find(cfg.methods.begin(), cfg.methods.end(), "time_domain_green_identity") != cfg.methods.end()) {
     io::StripWork work;
     work.method = "section_time_domain";
     work.panels = cfg.strip.panels;

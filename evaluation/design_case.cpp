@@ -56,7 +56,7 @@ sk::StripKernel BuildDesignKernel(const DesignCase& d) {
                          "(needed here); use method: time_domain_strip");
   return Guard(d, [&] {
     return sk::BuildHullStripKernel(d.running_hull, SolverOptions(d, d.solver.cs()), d.speed_m_s, d.water.rho_kg_m3,
-                                    d.water.g_m_s2, sk::TransientGreenKernelBuilder(d.solver.sectional_force));
+                                    d.water.g_m_s2, sk::TransientGreenKernelBuilder(d.solver.sectional_force, d.solver.body_potential));
   });
 }
 
@@ -81,7 +81,7 @@ sk::RaoTable ComputeDesignRaos(const DesignCase& d, const std::vector<double>& o
   const double cs = cs_override >= 0.0 ? cs_override : d.solver.cs();
   return Guard(d, [&] {
     sk::RaoTable t = sk::ComputeRaos(d.running_hull, d.mass, d.speed_m_s, d.water.rho_kg_m3, d.water.g_m_s2, omega_rad_s,
-                                     SolverOptions(d, cs), sk::TransientGreenKernelBuilder(d.solver.sectional_force));
+                                     SolverOptions(d, cs), sk::TransientGreenKernelBuilder(d.solver.sectional_force, d.solver.body_potential));
     t.warnings.insert(t.warnings.begin(), d.input_warnings.begin(), d.input_warnings.end());
     AddValidityWarnings(d, &t);
     // What the generator changed to build the hull goes with every result of it.
@@ -108,7 +108,7 @@ std::string SeaFrequencyAdvice(const DesignCase& d, const std::string& config_fi
 sk::CoefficientTable ComputeDesignCoefficients(const DesignCase& d, const std::vector<double>& omega_rad_s) {
   try {
     return sk::ComputeCoefficients(d.running_hull, d.mass, d.speed_m_s, d.water.rho_kg_m3, d.water.g_m_s2, omega_rad_s,
-                                   SolverOptions(d, d.solver.cs()), sk::TransientGreenKernelBuilder(d.solver.sectional_force));
+                                   SolverOptions(d, d.solver.cs()), sk::TransientGreenKernelBuilder(d.solver.sectional_force, d.solver.body_potential));
   } catch (const std::domain_error& e) {
     throw InputError("design '" + d.name + "': cannot compute coefficients: " + e.what());
   } catch (const std::invalid_argument& e) {

@@ -14,6 +14,8 @@ struct SolverSettings {
   sk::RaoSolverOptions rao;  ///< defaults: the paper's 40 sections x 14 panels, Cs 0, periodic path
   /// The strip momentum's rate of change (default) or the paper's fixed-point pressure integral.
   sk::SectionalForce sectional_force = sk::SectionalForce::kMomentum;
+  /// How the strip momentum takes the current sources' potential (time-domain strips, momentum form).
+  sk::BodyPotential body_potential = sk::BodyPotential::kSourceSum;
   sk::FrequencySpec frequencies;
   double cs() const { return rao.motion.damping_cs; }
 };

@@ -120,6 +120,18 @@ SolverConfig ParseSolverConfig(YamlMap& s, bool frequencies_required) {
   c.sectional_force = s.Choice("sectional_force", {"momentum", "pressure"}, "momentum") == "pressure"
                           ? sk::SectionalForce::kPressure
                           : sk::SectionalForce::kMomentum;
+  // Read (and recorded) only when given, so that configs without it resolve as before.
+  if (s.Has("body_potential")) {
+    c.body_potential = s.Choice("body_potential", {"source_sum", "green_identity"}, "source_sum") == "green_identity"
+                           ? sk::BodyPotential::kGreenIdentity
+                           : sk::BodyPotential::kSourceSum;
+    if (c.body_potential == sk::BodyPotential::kGreenIdentity && o.method != Method::kTimeDomainStrip)
+      s.Fail("body_potential", "green_identity applies to method: time_domain_strip only (strip_theory_stf: use "
+                               "section_formulation: direct)");
+    if (c.body_potential == sk::BodyPotential::kGreenIdentity && c.sectional_force != sk::SectionalForce::kMomentum)
+      s.Fail("body_potential", "green_identity applies to sectional_force: momentum only (the pressure form "
+                               "evaluates earlier steps' source potentials on the current contour)");
+  }
   if (c.sectional_force == sk::SectionalForce::kPressure && o.method != Method::kTimeDomainStrip)
     s.Fail("sectional_force", "pressure applies to method: time_domain_strip only (strip_theory_stf has its own "
                               "frequency-domain sectional force)");

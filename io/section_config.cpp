@@ -101,10 +101,11 @@ SectionRunConfig ReadSectionConfig(YamlMap& root) {
 
   if (s.Has("method")) {
     cfg.methods = s.Strings("method");
-    const char* kMethods = "frequency_domain, frequency_domain_direct, time_domain";
+    const char* kMethods = "frequency_domain, frequency_domain_direct, time_domain, time_domain_green_identity";
     if (cfg.methods.empty()) s.Fail("method", std::string("must list at least one of: ") + kMethods);
     for (const auto& m : cfg.methods)
-      if (m != "frequency_domain" && m != "frequency_domain_direct" && m != "time_domain")
+      if (m != "frequency_domain" && m != "frequency_domain_direct" && m != "time_domain" &&
+          m != "time_domain_green_identity")
         s.Fail("method", "'" + m + "' is not a method; use one or more of: " + kMethods);
   } else {
     cfg.methods = {"frequency_domain"};

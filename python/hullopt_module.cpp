@@ -269,7 +269,7 @@ PYBIND11_MODULE(_hullopt, m) {
         {
           py::gil_scoped_release release;
           t = sk::ComputeRaos(h, mass, speed_m_s, w.rho_kg_m3, w.g_m_s2, omega, o,
-                              sk::TransientGreenKernelBuilder(sc.sectional_force));
+                              sk::TransientGreenKernelBuilder(sc.sectional_force, sc.body_potential));
         }
         return RaoDict(t);
       },

@@ -13,11 +13,12 @@
 
 namespace hullopt::sk {
 
-StripKernelBuilder TransientGreenKernelBuilder(SectionalForce force) {
-  return [force](StripKernel* k) {
+StripKernelBuilder TransientGreenKernelBuilder(SectionalForce force, BodyPotential potential) {
+  return [force, potential](StripKernel* k) {
     StripOperatorOptions o;
     o.layout = k->layout;
     o.sectional_force = force;
+    o.body_potential = potential;
     StripKernel built = BuildStripKernelMirrorReduced(k->panels, k->x_m, k->dt_s, k->rho_kg_m3, k->g_m_s2, o);
     k->force = std::move(built.force);
     k->system_condition = std::move(built.system_condition);

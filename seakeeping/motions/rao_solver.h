@@ -24,7 +24,8 @@ using StripKernelBuilder = std::function<void(StripKernel*)>;
 /// The paper's kernel: transient free-surface Green function strip operators reduced to force rows
 /// (BuildStripKernel of strip_kernel_builder.h) on the kernel's panels, dt, ρ and g, with the sectional force
 /// in the given form (strip_operators.h).
-StripKernelBuilder TransientGreenKernelBuilder(SectionalForce force = SectionalForce::kMomentum);
+StripKernelBuilder TransientGreenKernelBuilder(SectionalForce force = SectionalForce::kMomentum,
+                                               BodyPotential potential = BodyPotential::kSourceSum);
 
 struct RaoSolverOptions {
   enum class Path { kPeriodic, kTimeMarching };

@@ -204,6 +204,39 @@ void Rankine(const FieldSet& f, const std::vector<Panel>& src, double rho, Eigen
   }
 }
 
+// The Rankine part of the momentum row from Green's identity instead of the source sum. The current sources
+// σ give the normal velocity A σ at the collocation points of `panels` (all of the step's panels, A with the
+// +1/2 and curvature self terms); the potential with that normal velocity, zero on z = 0 (the Rankine pair
+// G0 = (1/2π)(ln r − ln r′)), solves ½φ_i + Σ_j φ_j ∫_j ∂G0/∂n_ξ ds = Σ_j (Aσ)_j ∫_j G0 ds, and its momentum is
+// ρ Σ_i φ_i n_z,i l_i. ∇_ξ of ln r is −∇ of the field point, of ln r′ (−∂_y, +∂_z): the double layer of the
+// pair is n_y(−v_y + v′_y) + n_z(−v_z − v′_z) with v, v′ the field gradients of the panel and of its image.
+// A flat chord's own ln r part has no normal derivative on its line, so the self term is the ½ alone. The
+// potential stays bounded at re-entrant corners where σ does not (docs/sections.md, the direct formulation).
+Eigen::RowVectorXd GreenIdentityRankineMomentum(const std::vector<Panel>& panels, double rho) {
+  const int n = static_cast<int>(panels.size());
+  Eigen::MatrixXd A(n, n), D(n, n), S(n, n);
+  Eigen::RowVectorXd c(n);
+  for (int i = 0; i < n; ++i) {
+    const Panel& fp = panels[i];
+    const auto fn = fp.Normal();
+    const double y = fp.MidY(), z = fp.MidZ();
+    c(i) = fn[1] * fp.Length();
+    for (int j = 0; j < n; ++j) {
+      const Panel& p = panels[j];
+      const auto r = RankinePanelInfluence(p, y, z);
+      const auto m = ImagePanelInfluence(p, y, z);
+      A(i, j) = fn[0] * (r.vy - m.vy) + fn[1] * (r.vz - m.vz);
+      const auto pn = p.Normal();
+      const double rvy = i == j ? 0.0 : r.vy, rvz = i == j ? 0.0 : r.vz;
+      D(i, j) = pn[0] * (-rvy + m.vy) + pn[1] * (-rvz - m.vz) + (i == j ? 0.5 : 0.0);
+      S(i, j) = r.phi - m.phi;
+    }
+  }
+  // Row c D⁻¹ S A: solve Dᵀ x = cᵀ once.
+  const Eigen::VectorXd x = D.transpose().partialPivLu().solve(c.transpose());
+  return rho * (x.transpose() * S) * A;
+}
+
 // Mirror symmetry of one step's panels about y = yc: the reduced (half) panels and, per reduced panel, its
 // own full index and its partner's (the same index for a panel on the symmetry line).
 struct MirrorMap {
@@ -317,6 +350,9 @@ bool StripOperatorOptions::IsValid(std::string* error) const {
   };
   if (field_points_per_panel < 1 || field_points_per_panel > 16)
     return fail("field_points_per_panel must be in 1..16, got " + std::to_string(field_points_per_panel));
+  if (body_potential == BodyPotential::kGreenIdentity && sectional_force != SectionalForce::kMomentum)
+    return fail("body potential from Green's identity applies to the momentum form of the sectional force only (the "
+                "pressure form evaluates earlier steps' source potentials on the current contour)");
   return true;
 }
 
@@ -438,6 +474,8 @@ StripOperators BuildStripOperators(const std::vector<std::vector<Panel>>& panels
     Eigen::MatrixXd A;
     Eigen::RowVectorXd mom;
     Rankine(f, panels_per_step[n], rho, &A, &mom);
+    if (options.body_potential == BodyPotential::kGreenIdentity && !panels_per_step[n].empty())
+      mom = GreenIdentityRankineMomentum(panels_per_step[n], rho);
     if (ops.reduced_) A = ReduceColumns(A, maps[n]), mom = ReduceColumns(mom, maps[n]);
     ops.memory_[n].resize(n);
     ops.momentum_memory_[n].resize(n);
@@ -534,6 +572,7 @@ StripOperators BuildFixedSectionOperators(const std::vector<Panel>& panels, int 
   Eigen::MatrixXd A;
   Eigen::RowVectorXd mom;
   Rankine(f, panels, rho, &A, &mom);
+  if (options.body_potential == BodyPotential::kGreenIdentity) mom = GreenIdentityRankineMomentum(panels, rho);
   ops.system_ = {A, A - half[0].nv};
   ops.lu_.resize(2);
   ops.lu_[0].compute(ops.system_[0]);

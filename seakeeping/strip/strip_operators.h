@@ -41,6 +41,18 @@ enum class SectionalForce {
   kPressure,
 };
 
+/// How the momentum of the current sources' instantaneous (Rankine) potential is evaluated. The memory, and the
+/// source densities that carry it, are the same either way.
+enum class BodyPotential {
+  /// The potential of the source sum Σ σ_j (1/2π)∫(ln r − ln r′) ds on the body: the paper's formulation.
+  kSourceSum,
+  /// The body potential of that flow from Green's identity, given its normal velocity at the collocation points
+  /// (the direct formulation with the Rankine pair, zero on z = 0). σ is singular at a re-entrant corner (a SWATH
+  /// strut meeting its bulb), and constant source panels then give the potential at first order only; the
+  /// potential itself stays bounded and converges at second order (docs/sections.md). Momentum form only.
+  kGreenIdentity,
+};
+
 struct StripOperatorOptions {
   /// Gauss points per body panel for the momentum integral ∫φ n_z dl (1 = panel mid-points).
   int field_points_per_panel = 2;
@@ -57,6 +69,8 @@ struct StripOperatorOptions {
   StationLayout layout = kDefaultStationLayout;
   /// Sectional force form (general operators; a fixed section gives the same force either way).
   SectionalForce sectional_force = SectionalForce::kMomentum;
+  /// How the current sources' potential enters the momentum (kGreenIdentity needs kMomentum).
+  BodyPotential body_potential = BodyPotential::kSourceSum;
   bool IsValid(std::string* error) const;
 };
 

@@ -148,3 +148,21 @@ TEST_CASE("solver.section_formulation: read only when given, strip theory only",
   o.method = hullopt::sk::RaoSolverOptions::Method::kStripTheory;
   CHECK(o.IsValid(&err));
 }
+
+TEST_CASE("solver.body_potential: read only when given, time-domain momentum form only", "[config]") {
+  auto plain = FromText("frequencies: { omega_rad_s: [1.0] }\n");
+  const auto d = hullopt::io::ParseSolverConfig(plain);
+  CHECK_FALSE(plain.resolved()["body_potential"]);  // configs without it resolve as before
+  CHECK(d.body_potential == hullopt::sk::BodyPotential::kSourceSum);
+  auto given = FromText("body_potential: green_identity\nfrequencies: { omega_rad_s: [1.0] }\n");
+  CHECK(hullopt::io::ParseSolverConfig(given).body_potential == hullopt::sk::BodyPotential::kGreenIdentity);
+  auto bad = [](const std::string& text) {
+    auto m = FromText(text + "frequencies: { omega_rad_s: [1.0] }\n");
+    hullopt::io::ParseSolverConfig(m);
+  };
+  CHECK_THROWS_WITH(bad("method: strip_theory_stf\nbody_potential: green_identity\n"),
+                    Catch::Contains("solver.body_potential") && Catch::Contains("time_domain_strip only"));
+  CHECK_THROWS_WITH(bad("sectional_force: pressure\nbody_potential: green_identity\n"),
+                    Catch::Contains("solver.body_potential") && Catch::Contains("momentum only"));
+  CHECK_THROWS_WITH(bad("body_potential: dipoles\n"), Catch::Contains("solver.body_potential"));
+}

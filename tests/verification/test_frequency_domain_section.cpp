@@ -24,6 +24,7 @@
 #include "seakeeping/green/frequency_domain_green.h"
 #include "seakeeping/sections/frequency_domain_section.h"
 #include "seakeeping/sections/section_shapes.h"
+#include "support/bulb_under_strut.h"
 #include "support/ursell_semicircle.h"
 
 using namespace hullopt::sk;
@@ -308,20 +309,6 @@ namespace {
 
 constexpr SectionFormulation kDirect = SectionFormulation::kDirect;
 
-// Half contour of a circular bulb (radius R, centre `depth` below the waterline) under a straight strut of
-// half-width `strut`, keel to waterline; the junction is a sharp re-entrant corner (interior angle
-// 180° + the angle between strut and circle, about 255° here).
-std::vector<std::array<double, 2>> BulbUnderStrut(double R, double depth, double strut) {
-  std::vector<std::array<double, 2>> c;
-  const double end = M_PI - std::asin(strut / R);  // polar angle from the keel of the junction
-  for (int i = 0; i <= 400; ++i) {
-    const double t = end * i / 400;
-    c.push_back({R * std::sin(t), -depth - R * std::cos(t)});
-  }
-  const double top = c.back()[1];
-  for (int i = 1; i <= 40; ++i) c.push_back({strut, top * (1.0 - i / 40.0)});
-  return c;
-}
 
 }  // namespace
 
@@ -408,7 +395,7 @@ TEST_CASE("re-entrant corner: a bulb under a strut at 14 panels", "[fd][direct]"
   auto a33 = [&](int n, SectionFormulation f) {
     FrequencyDomainOptions o = Options();
     o.formulation = f;
-    return SolveSectionFrequencyDomain({PanelSymmetricSection(BulbUnderStrut(1.0, 1.8, 0.25), n)}, w, o).a33();
+    return SolveSectionFrequencyDomain({PanelSymmetricSection(hullopt::testing::BulbUnderStrut(1.0, 1.8, 0.25), n)}, w, o).a33();
   };
   const double s14 = a33(14, SectionFormulation::kSource), s224 = a33(224, SectionFormulation::kSource);
   const double d14 = a33(14, kDirect), d28 = a33(28, kDirect), d224 = a33(224, kDirect);

@@ -70,10 +70,14 @@ TEST_CASE("mirror-reduced strip kernel gives the full solve's vertical force for
   for (int n = 0; n < N; ++n) x[n] = 5.0 - 0.5 * n;
   std::mt19937 rng(11);
   std::normal_distribution<double> normal;
-  for (int kind = 0; kind < 4; ++kind) {
-    INFO("strip kind " << kind);
+  for (int case_index = 0; case_index < 8; ++case_index) {
+    // Both ways of taking the current sources' potential: the reduction must hold for each.
+    const int kind = case_index % 4;
+    const auto potential = case_index < 4 ? BodyPotential::kSourceSum : BodyPotential::kGreenIdentity;
+    INFO("strip kind " << kind << ", Green's identity " << (potential == BodyPotential::kGreenIdentity));
     const auto panels = Strips(N, kind);
     StripOperatorOptions full_options, mirror_options;
+    full_options.body_potential = mirror_options.body_potential = potential;
     mirror_options.use_mirror_symmetry = true;
     const auto reduced_ops = BuildStripOperators(panels, dt, kRho, kG, mirror_options);
     CHECK(reduced_ops.MirrorReduced() == (kind != 3));
