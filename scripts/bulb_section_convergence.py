@@ -15,7 +15,8 @@ Usage:
   scripts/bulb_section_convergence.py bulb 1.0 1.8 0.25
   scripts/bulb_section_convergence.py bulb 1.491 2.11 0.373 0.5
 Options (environment): OMEGA (rad/s), PANELS (space-separated), HULLOPT (binary, default build/app/hullopt),
-METHOD (the `hullopt section` method: frequency_domain, the default, or frequency_domain_direct).
+METHOD (the `hullopt section` method: frequency_domain, the default, frequency_domain_direct, time_domain or
+time_domain_green_identity).
 """
 import csv
 import math

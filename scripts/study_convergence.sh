@@ -4,6 +4,7 @@
 # seas and the largest strip condition estimate. Uses `hullopt evaluate` with `resolution_check` (factor 2)
 # at 20 x 8 (giving 40 x 14) and at 40 x 14 (giving 80 x 28); prints a markdown table.
 # Usage: scripts/study_convergence.sh [HULLOPT_BINARY] [WORK_DIR]
+# Environment: SOLVER_EXTRA, further solver keys for every hull (e.g. SOLVER_EXTRA="body_potential: green_identity").
 set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
 bin="$(realpath "${1:-$root/build/app/hullopt}")"
@@ -17,7 +18,7 @@ for res in "20 8" "40 14"; do
   for cfg in "$root"/configs/davis-holloway-2003/hull*.yaml; do
     out="$dir/hulls/$(basename "$cfg")"
     cp "$cfg" "$out"
-    printf 'solver: { sections: %s, panels: %s }\n' "$1" "$2" >> "$out"
+    printf 'solver: { sections: %s, panels: %s%s }\n' "$1" "$2" "${SOLVER_EXTRA:+, $SOLVER_EXTRA}" >> "$out"
   done
   sed -e "s#\(config: *\)\(configs/\)\?davis-holloway-2003/#\1$dir/hulls/#" "$study" > "$dir/study.yaml"
   printf 'resolution_check: { enabled: true, factor: 2 }\n' >> "$dir/study.yaml"
