@@ -55,7 +55,9 @@ void RunCoefficients(const std::string& config_file, const std::string& out_dir)
   fn << "speed U = " << d.speed_m_s << " m/s (Fn " << Fn << "), method " << eval::MethodName(d.solver.rao.method) << ", "
      << d.solver.rao.sections << " sections x " << d.solver.rao.panels << " panels, Cs = " << d.solver.cs()
      << (d.solver.rao.interaction ? "" : ", bodies without interaction")
-     << (d.solver.sectional_force == sk::SectionalForce::kPressure ? ", sectional force: pressure form" : "");
+     << (d.solver.sectional_force == sk::SectionalForce::kPressure ? ", sectional force: pressure form" : "")
+     << (d.solver.body_potential == sk::BodyPotential::kGreenIdentity ? ", body potential: Green's identity" : "")
+     << (d.solver.rao.section_formulation == sk::SectionFormulation::kDirect ? ", sections: direct formulation" : "");
   std::vector<std::string> notes = {"hull: " + name, fn.str()};
   for (const auto& w : t.warnings) notes.push_back("warning: " + w);
   try {

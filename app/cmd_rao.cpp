@@ -97,7 +97,9 @@ void RunRao(const std::string& config_file, const std::string& out_dir) {
              : std::string())
      << ", " << sc.rao.sections << " sections x "
      << sc.rao.panels << " panels, Cs = " << sc.cs() << (sc.rao.interaction ? "" : ", bodies without interaction")
-     << (sc.sectional_force == sk::SectionalForce::kPressure ? ", sectional force: pressure form" : "");
+     << (sc.sectional_force == sk::SectionalForce::kPressure ? ", sectional force: pressure form" : "")
+     << (sc.body_potential == sk::BodyPotential::kGreenIdentity ? ", body potential: Green's identity" : "")
+     << (sc.rao.section_formulation == sk::SectionFormulation::kDirect ? ", sections: direct formulation" : "");
   if (!hull_opts.attitude.IsEvenKeel())
     fn << ", running attitude: sinkage " << hull_opts.attitude.sinkage_m << " m (+ down), trim "
        << hull_opts.attitude.trim_deg << " deg (+ bow up) at x = " << mass.lcg_m_from_ap << " m";

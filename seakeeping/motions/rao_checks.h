@@ -15,7 +15,16 @@ void RequireFiniteRaos(const RaoTable& table);
 /// in both (the reference paper's Figs. 6-11); near such a peak the result rests on the damping (Cs).
 constexpr double kResonanceWarningRao = 5.0;
 
-/// Warnings for RAO peaks above kResonanceWarningRao (with their value and frequency); empty when none.
+/// A resonance peak is under-sampled when the peak of the resonance fitted through the largest sample and its
+/// two neighbours exceeds the largest sample by more than this fraction (the resolution check's default peak
+/// tolerance: the grid's error is then as large as the strip resolution may be).
+constexpr double kPeakSamplingTolerance = 0.03;
+
+/// Warnings for RAO peaks above kResonanceWarningRao (with their value and frequency) and for peaks the
+/// frequency grid under-samples; empty when none. A peak is under-sampled when both neighbours of the largest
+/// interior sample lie below 1/√2 of it (one sample in the half-power band), or when a single-resonance
+/// response, 1/|X|² quadratic in ω (exact for one degree of freedom near its natural frequency), fitted
+/// through the three samples peaks above the largest by more than kPeakSamplingTolerance.
 std::vector<std::string> RaoResonanceWarnings(const RaoTable& table);
 
 }  // namespace hullopt::sk
