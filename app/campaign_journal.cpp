@@ -122,6 +122,19 @@ std::string CampaignJournal::FirstProblem(opt::Evaluator& evaluator, const opt::
   std::vector<std::size_t> spots;
   const std::size_t n = rows_.size();
   for (int k = 0; k < kSpotRows && n > 0; ++k) spots.push_back(k * (n - 1) / (kSpotRows - 1));
+  // The rows a resumed campaign would report as its best: whatever the summary and report name as the best
+  // design was recomputed, so a row edited to look better than it is (objective and per-sea values changed
+  // consistently, which the implied-objective check cannot see) is found before it is reported.
+  std::vector<std::size_t> ranked;
+  for (std::size_t i = 0; i < n; ++i)
+    if (logged_[i].feasible && logged_[i].result.produced) ranked.push_back(i);
+  const std::size_t best_count = std::min<std::size_t>(kBestRows, ranked.size());
+  std::partial_sort(ranked.begin(), ranked.begin() + static_cast<std::ptrdiff_t>(best_count), ranked.end(),
+                    [&](std::size_t a, std::size_t b) {
+                      return logged_[a].result.objective < logged_[b].result.objective;
+                    });
+  spots.insert(spots.end(), ranked.begin(), ranked.begin() + static_cast<std::ptrdiff_t>(best_count));
+  std::sort(spots.begin(), spots.end());
   spots.erase(std::unique(spots.begin(), spots.end()), spots.end());
   for (const std::size_t i : spots) {
     const io::HistoryRow& row = rows_[i];

@@ -32,13 +32,18 @@ class CampaignJournal {
   /// variables within their bounds, (run, step) unique, the objective equal to what the row's variables and
   /// per-sea values imply (Evaluator::ObjectiveImplied, where the evaluator can say), `feasible` equal to the
   /// constraints applied to the row's own values; and recomputes a spot sample of rows (kSpotRows: the first, the last and evenly spaced
-  /// ones between) with the evaluator, whose objective, per-sea values, constrained quantities, status and
+  /// ones between, and the kBestRows best feasible rows) with the evaluator, whose objective, per-sea values, constrained quantities, status and
   /// message must agree within kSpotRelTol. (Finite numbers and the refused/evaluated pattern are checked when
   /// the file is read.) Throws io::InputError naming the file, line and column of the first mismatch.
   void Verify(opt::Evaluator& evaluator, const opt::CampaignDefinition& def) const;
 
   /// Rows recomputed by Verify: the first, the last and evenly spaced ones between (fewer if the log is short).
   static constexpr int kSpotRows = 4;
+  /// Verify also recomputes the kBestRows feasible rows of lowest objective (the best design a resumed campaign
+  /// reports and its runners-up): an optimize log replays only when its later steps follow from the logged
+  /// results, but an explore log's samples do not depend on each other, so a row edited consistently would
+  /// otherwise be reported as the best. Three: the best and two runners-up, each one evaluation on resume.
+  static constexpr int kBestRows = 3;
   /// Relative tolerance of the spot check and of the implied objective (plus the same absolute tolerance for values near 0). Evaluators are
   /// deterministic bit for bit for one build (opt::Evaluator's contract; tests/cli/campaign_parallel.sh checks
   /// it across thread counts), so an unchanged row agrees exactly with the binary that wrote it; 1e-9 leaves

@@ -2,6 +2,7 @@
 #include <glog/logging.h>
 
 #include <cctype>
+#include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <iostream>
@@ -10,6 +11,7 @@
 #include "app/calibration_model.h"
 #include "app/commands.h"
 #include "app/output_dir.h"
+#include "evaluation/validity_envelope.h"
 #include "io/atomic_file.h"
 #include "io/calibrate_config.h"
 #include "io/calibration_output.h"
@@ -79,13 +81,36 @@ void RunCalibrate(const std::string& config_file, const std::string& out_dir) {
   }
 
   r.warnings.insert(r.warnings.end(), validity.begin(), validity.end());
+  // A fit is only offered for pasting when it is physical and determined: a fitted Cs outside the validity
+  // envelope's range, or with a standard error larger than its value, is reported as not converged and gets no
+  // calibrated_solver*.yaml.
+  for (std::size_t c = 0; c < r.case_Cs.size(); ++c) {
+    const std::string label = cases.size() > 1 && r.mode != opt::CsFitMode::kSingle ? " of case '" + cases[c].label + "'" : "";
+    for (const auto& f : eval::CheckEnvelopeValue(eval::EnvelopeQuantity::kDampingCs, r.case_Cs[c], "Cs")) {
+      r.converged = false;
+      r.warnings.push_back("fitted " + f.message + label + ": the fit is not converged to a physical Cs");
+    }
+    if (c < r.case_Cs_std_error.size() && !(r.case_Cs_std_error[c] <= std::fabs(r.case_Cs[c]))) {
+      r.converged = false;
+      char buf[160];
+      std::snprintf(buf, sizeof buf, " = %.4g has a standard error %.3g larger than its value", r.case_Cs[c],
+                    r.case_Cs_std_error[c]);
+      r.warnings.push_back("fitted Cs" + label + buf + ": the data do not determine it; the fit is not converged");
+    }
+    if (r.mode == opt::CsFitMode::kSingle) break;
+  }
+  if (!r.converged)
+    r.warnings.push_back("the fit did not converge to a determined, physical Cs: no calibrated_solver*.yaml is "
+                         "written (see calibration_report.txt)");
   PrepareOutputDir(out_dir, "calibrate", config_file, root.resolved());
   Write(OutPath(out_dir, "calibration.json"), io::CalibrationJson(cfg, cases, r));
   Write(OutPath(out_dir, "calibration_report.txt"), r.FullReport());
   io::WriteSvg(io::CalibrationPlot(cases, r, cfg.options.Cs_initial),
                OutPath(out_dir, "calibration_plot.svg"));
   std::vector<std::string> snippets;
-  if (r.mode == opt::CsFitMode::kSingle) {
+  if (!r.converged) {
+    // nothing to paste
+  } else if (r.mode == opt::CsFitMode::kSingle) {
     snippets.push_back("calibrated_solver.yaml");
     Write(OutPath(out_dir, snippets.back()), io::CalibratedSolverYaml(cfg, cases, r, 0));
   } else {

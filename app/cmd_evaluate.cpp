@@ -36,6 +36,7 @@
 
 #include "app/commands.h"
 #include "app/design_resolution_check.h"
+#include "evaluation/validity_envelope.h"
 #include "io/design_defaults.h"
 #include "io/design_config.h"
 #include "app/output_dir.h"
@@ -49,6 +50,7 @@
 #include "io/seas_config.h"
 #include "io/operability_config.h"
 #include "io/operability_output.h"
+#include "io/water_config.h"
 #include "io/yaml_map.h"
 #include "seakeeping/motions/rao_checks.h"
 #include "seas/design_evaluation.h"
@@ -160,11 +162,18 @@ void Run(const std::string& config_file, const std::string& out_dir) {
   const auto t0 = std::chrono::steady_clock::now();
   io::YamlMap root = io::YamlMap::LoadFile(config_file);
   double g = 9.81;
+  std::vector<std::string> water_flags;  // validity-envelope flags of a water block read here (RAO files)
   if (!root.Has("hull")) {  // with a hull, water is read with the design
     io::YamlMap water = root.MapOrEmpty("water");
     g = water.Number("g_m_s2", 9.81);
-    if (water.Has("rho_kg_m3")) water.Number("rho_kg_m3");
-    if (!(g > 5.0 && g < 15.0)) water.Fail("g_m_s2", "must be within 5..15 m/s²");
+    io::RefuseOutsideEnvelope(water, "g_m_s2", eval::EnvelopeQuantity::kGravity, g);
+    eval::EnvelopeInput env;
+    env.g_m_s2 = g;
+    if (water.Has("rho_kg_m3")) {
+      env.rho_kg_m3 = water.Number("rho_kg_m3");
+      io::RefuseOutsideEnvelope(water, "rho_kg_m3", eval::EnvelopeQuantity::kWaterDensity, env.rho_kg_m3);
+    }
+    for (const auto& f : eval::CheckEnvelope(env)) water_flags.push_back(f.message);
     water.Finish();
   }
   const double speed_check = root.Has("hull") ? NAN : ReadSpeedCheck(root);
@@ -246,6 +255,9 @@ void Run(const std::string& config_file, const std::string& out_dir) {
     } catch (const std::domain_error& e) {
       throw io::InputError(in.where + ": design '" + in.design.name + "': " + e.what());
     }
+    for (const auto& w : water_flags) in.design.rao.warnings.push_back(w);
+    for (auto& w : eval::ResponseEnvelopeWarnings(in.design.evaluation, in.computed ? in.computed->water.g_m_s2 : g))
+      in.design.rao.warnings.push_back(std::move(w));
     if (resolution.enabled && in.computed)
       CheckDesignResolution(resolution, spectra, points, options, *in.computed, in.cs_override, in.where,
                             &in.design);

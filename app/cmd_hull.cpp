@@ -7,6 +7,7 @@
 
 #include "app/commands.h"
 #include "app/output_dir.h"
+#include "evaluation/hull_plausibility.h"
 #include "io/bodyplan_svg.h"
 #include "io/html_report.h"
 #include "io/hull_config.h"
@@ -48,6 +49,16 @@ void RunHull(const std::string& config, const std::string& out_dir) {
     io::YamlMap mass = root.MapOrEmpty("mass");
     m = io::ParseMassConfig(mass, hs, &warnings);
     hs = hull::ComputeHydrostatics(hull, water.rho_kg_m3, m.kg_m);
+  }
+  {
+    eval::EnvelopeInput env;
+    env.rho_kg_m3 = water.rho_kg_m3;
+    env.g_m_s2 = water.g_m_s2;
+    if (has_speed) env.speed_m_s = speed.MetresPerSecond(hs.L_m, water.g_m_s2);
+    env.hull = &hull;
+    env.hs = &hs;
+    env.mass = &m;
+    for (auto& w : eval::ApplyEnvelope(eval::CheckEnvelope(env), config)) warnings.push_back(std::move(w));
   }
   root.Finish();
   io::HydrostaticsReport rep;

@@ -8,6 +8,7 @@
 #include "app/commands.h"
 #include "app/output_dir.h"
 #include "app/run_checks.h"
+#include "evaluation/hull_plausibility.h"
 #include "io/design_config.h"
 #include "io/hull_config.h"
 #include "io/input_error.h"
@@ -56,6 +57,17 @@ void RunRao(const std::string& config_file, const std::string& out_dir) {
   auto mass_map = root.MapOrEmpty("mass");
   const hull::MassProperties mass = io::ParseMassConfig(mass_map, hs, &input_warnings);
   const double U = speed.MetresPerSecond(hs.L_m, water.g_m_s2);
+  {
+    eval::EnvelopeInput env;
+    env.rho_kg_m3 = water.rho_kg_m3;
+    env.g_m_s2 = water.g_m_s2;
+    env.speed_m_s = U;
+    env.cs = sc.cs();
+    env.hull = &hull;
+    env.hs = &hs;
+    env.mass = &mass;
+    for (auto& w : eval::ApplyEnvelope(eval::CheckEnvelope(env), config_file)) input_warnings.push_back(std::move(w));
+  }
   const std::optional<io::MeasuredRao> measured =
       io::ReadRaoComparison(root, U / std::sqrt(water.g_m_s2 * hs.L_m), hs.L_m, water.g_m_s2);
   root.Finish();

@@ -8,6 +8,7 @@
 
 #include "app/commands.h"
 #include "app/output_dir.h"
+#include "evaluation/hull_plausibility.h"
 #include "io/design_config.h"
 #include "io/hull_config.h"
 #include "io/input_error.h"
@@ -54,12 +55,28 @@ void RunResistance(const std::string& config, const std::string& out_dir) {
                                     "design speed `speed:`)");
     speeds.push_back(speed.MetresPerSecond(model->MainLength_m(), water.g_m_s2));
   }
+  // The validity envelope: the water and the hull once, each speed in its row (Michell's thin-ship theory, like
+  // the strips, assumes a hull floating on its at-rest waterline: planing speeds are flagged or refused).
+  eval::EnvelopeInput env;
+  env.rho_kg_m3 = water.rho_kg_m3;
+  env.g_m_s2 = water.g_m_s2;
+  env.hull = &hull;
+  env.hs = &hs;
+  const std::vector<std::string> envelope_warnings = eval::ApplyEnvelope(eval::CheckEnvelope(env), config);
   std::vector<res::ResistanceAtSpeed> rows;
   for (double U : speeds) {
     try {
       rows.push_back(model->At(U, water.rho_kg_m3, water.g_m_s2));
     } catch (const std::invalid_argument& e) {
       throw io::InputError(config + ": key 'resistance': " + e.what());
+    }
+    eval::EnvelopeInput at_speed;
+    at_speed.g_m_s2 = water.g_m_s2;
+    at_speed.speed_m_s = U;
+    at_speed.hs = &hs;
+    for (const auto& f : eval::CheckEnvelope(at_speed)) {
+      if (f.refuse) throw io::InputError(config + ": key 'resistance': " + f.message);
+      rows.back().warning += (rows.back().warning.empty() ? "" : "; ") + f.message;
     }
   }
   PrepareOutputDir(out_dir, "resistance", config, root.resolved());
@@ -73,6 +90,10 @@ void RunResistance(const std::string& config, const std::string& out_dir) {
   std::vector<std::string> header = {"hull: " + hull_name + " (" + hull.type + ")", cond.str(),
                                      "ITTC-1957 friction, Michell thin-ship wave resistance with multihull "
                                      "interference, dry-transom hydrostatic deficit (docs/resistance.md)"};
+  for (const auto& w : envelope_warnings) {
+    std::fprintf(stderr, "hullopt: warning: hull '%s': %s\n", hull_name.c_str(), w.c_str());
+    header.push_back("warning: " + w);
+  }
   int warned = 0;
   for (const auto& r : rows)
     if (!r.warning.empty()) {

@@ -104,6 +104,7 @@ void WritePlot(const std::vector<MethodCurve>& curves, const io::SectionRunConfi
   foot << "A: submerged area of the strip (" << area << " m²); B: beam of one section (" << beam << " m); "
        << cfg.strip.panels << " panels per section; ρ " << cfg.rho_kg_m3 << " kg/m³, g " << cfg.g_m_s2
        << " m/s²";
+  for (const auto& w : cfg.warnings) foot << "; warning: " << w;
   fig.footnote = foot.str();
   fig.AddPanel("Added mass", "ω²(B/2)/g [-]", "a33 / (ρA) [-]");
   fig.AddPanel("Damping", "ω²(B/2)/g [-]", "b33 / (ρAω) [-]");
@@ -150,6 +151,7 @@ void RunSection(const std::string& config_file, const std::string& out_dir) {
         throw std::runtime_error("section: " + c.method + " gave a non-finite coefficient at omega = " +
                                  std::to_string(c.omega[i]) + " rad/s");
   PrepareOutputDir(out_dir, "section", config_file, root.resolved());
+  for (const auto& w : cfg.warnings) std::cerr << "hullopt: warning: " << w << "\n";
   WriteCsv(curves, OutPath(out_dir, "section.csv"));
   WritePlot(curves, cfg, OutPath(out_dir, "section.svg"));
   std::cout << "hullopt section: " << cfg.omegas_rad_s.size() << " frequencies, " << cfg.methods.size()

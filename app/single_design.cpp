@@ -2,6 +2,7 @@
 
 #include "app/design_resolution_check.h"
 #include "app/run_checks.h"
+#include "evaluation/validity_envelope.h"
 #include "io/design_config.h"
 #include "io/design_defaults.h"
 #include "io/input_error.h"
@@ -39,6 +40,7 @@ SingleDesign EvaluateSingleDesign(io::YamlMap& root, const std::string& name, co
   } catch (const std::exception& e) {
     throw io::InputError(config + ": design '" + name + "': " + e.what());
   }
+  for (auto& w : eval::ResponseEnvelopeWarnings(d.evaluation, s.design.water.g_m_s2)) d.rao.warnings.push_back(std::move(w));
   if (s.resolution.enabled)
     CheckDesignResolution(s.resolution, s.spectra, s.points, s.options, s.design, -1.0, config, &d);
   return s;

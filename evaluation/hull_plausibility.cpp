@@ -26,4 +26,12 @@ std::vector<std::string> CheckHull(const hull::HullForm& hull, const std::string
   return ApplyFindings(hull::CheckHullPlausibility(hull, hs), where);
 }
 
+std::vector<std::string> ApplyEnvelope(const std::vector<EnvelopeFinding>& findings, const std::string& where) {
+  std::vector<std::string> warnings;
+  for (const auto& f : findings)
+    if (f.refuse) throw InputError(where + ": key '" + f.key + "': " + f.message);
+  for (const auto& f : findings) warnings.push_back(f.message);
+  return warnings;
+}
+
 }  // namespace hullopt::eval

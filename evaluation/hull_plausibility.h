@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "parametric_hull/hull_form.h"
+#include "evaluation/validity_envelope.h"
 #include "parametric_hull/plausibility.h"
 
 namespace hullopt::eval {
@@ -17,5 +18,9 @@ std::vector<std::string> CheckHull(const hull::HullForm& hull, const std::string
 /// Throws InputError "where: rule" for the first refusal among findings; returns the warnings' messages.
 std::vector<std::string> ApplyFindings(const std::vector<hull::PlausibilityFinding>& findings,
                                        const std::string& where);
+
+/// The validity envelope (evaluation/validity_envelope.h) applied as ApplyFindings does: throws InputError
+/// "where: key 'k': rule" for the first refusal; returns the warnings' messages.
+std::vector<std::string> ApplyEnvelope(const std::vector<EnvelopeFinding>& findings, const std::string& where);
 
 }  // namespace hullopt::eval

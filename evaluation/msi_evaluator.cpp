@@ -6,6 +6,7 @@
 
 #include "evaluation/design_resolution_check.h"
 #include "evaluation/input_error.h"
+#include "evaluation/validity_envelope.h"
 
 namespace hullopt::eval {
 namespace {
@@ -52,6 +53,7 @@ class MsiEvaluator : public opt::Evaluator, public ResolutionCheckable {
       return r;
     }
     for (const auto& w : rao.warnings) r.warning += (r.warning.empty() ? "" : "; ") + w;
+    for (const auto& w : ResponseEnvelopeWarnings(ev, d.water.g_m_s2)) r.warning += (r.warning.empty() ? "" : "; ") + w;
     for (std::size_t i = 0; i < ev.seas.size(); ++i) {
       const auto& s = ev.seas[i];
       const auto& p = o_.position < 0 ? s.mean : s.positions[o_.position];

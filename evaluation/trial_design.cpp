@@ -92,6 +92,17 @@ DesignCase BuildTrialDesign(const DesignBasis& b, const std::vector<const hull::
   d.mass.kyy_m = b.kyy_over_L * hs.L_m;
   d.mass.kg_m = b.kg_over_T * hs.T_m;
   d.hydrostatics = hull::ComputeHydrostatics(d.hull, d.water.rho_kg_m3, d.mass.kg_m);
+  // The method's validity envelope, as for a design read from a config: a trial beyond a hard limit is not
+  // produced (its error is its message), one within is flagged in its row.
+  EnvelopeInput env;
+  env.rho_kg_m3 = d.water.rho_kg_m3;
+  env.g_m_s2 = d.water.g_m_s2;
+  env.speed_m_s = d.speed_m_s;
+  env.cs = d.solver.cs();
+  env.hull = &d.hull;
+  env.hs = &d.hydrostatics;
+  env.mass = &d.mass;
+  for (auto& w : ApplyEnvelope(CheckEnvelope(env), file + ": design '" + name + "'")) d.input_warnings.push_back(std::move(w));
   return d;
 }
 

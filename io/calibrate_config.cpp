@@ -1,6 +1,7 @@
 #include "io/calibrate_config.h"
 
 #include "io/config_path.h"
+#include "io/water_config.h"
 
 namespace hullopt::io {
 namespace {
@@ -89,6 +90,7 @@ CalibrateConfig ReadCalibrateConfig(YamlMap& root) {
   o.use_phases = cal.Boolean("use_phases", false);
   o.Cs_initial = cal.Number("Cs_initial", o.Cs_initial);
   if (o.Cs_initial < 0) cal.Fail("Cs_initial", "must be >= 0 (Cs is a damping coefficient)");
+  RefuseOutsideEnvelope(cal, "Cs_initial", eval::EnvelopeQuantity::kDampingCs, o.Cs_initial);
   o.slope_initial = cal.Number("slope_initial", 0.0);
   o.max_iterations = cal.Integer("max_iterations", o.max_iterations);
   if (o.max_iterations < 1) cal.Fail("max_iterations", "must be >= 1");

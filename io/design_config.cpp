@@ -1,5 +1,6 @@
 #include "io/design_config.h"
 
+#include "evaluation/hull_plausibility.h"
 #include "io/input_error.h"
 #include "io/motion_config.h"
 #include "io/water_config.h"
@@ -36,6 +37,16 @@ eval::DesignCase LoadDesignCase(YamlMap& root, const std::string& config_file, c
   d.mass = ParseMassConfig(mass_map, d.hydrostatics, &d.input_warnings);
   d.running_hull = ApplyHullAttitude(hull_opts, d.hull, d.mass.lcg_m_from_ap, config_file);
   if (read_speed) d.speed_m_s = speed.MetresPerSecond(d.hydrostatics.L_m, d.water.g_m_s2);
+  // The method's validity envelope: refused beyond its hard limits, flagged in every output within them.
+  eval::EnvelopeInput env;
+  env.rho_kg_m3 = d.water.rho_kg_m3;
+  env.g_m_s2 = d.water.g_m_s2;
+  if (read_speed) env.speed_m_s = d.speed_m_s;
+  env.cs = d.solver.cs();
+  env.hull = &d.hull;
+  env.hs = &d.hydrostatics;
+  env.mass = &d.mass;
+  for (auto& w : eval::ApplyEnvelope(eval::CheckEnvelope(env), config_file)) d.input_warnings.push_back(std::move(w));
   if (config) *config = {d.water, hull_opts, speed, d.solver, d.has_frequencies};
   return d;
 }

@@ -1,5 +1,7 @@
 #include "io/motion_config.h"
 
+#include "io/water_config.h"
+
 #include <sstream>
 
 #include "evaluation/trial_design.h"
@@ -72,6 +74,7 @@ SolverConfig ParseSolverConfig(YamlMap& s, bool frequencies_required) {
     s.Fail("panels", "must be even and in [4, " + std::to_string(kMaxPanels) + "] (the paper uses 14)");
   o.motion.damping_cs = s.Number("Cs", o.motion.damping_cs);
   if (o.motion.damping_cs < 0.0) s.Fail("Cs", "must be >= 0 (the paper's values are 0 to 0.15)");
+  RefuseOutsideEnvelope(s, "Cs", eval::EnvelopeQuantity::kDampingCs, o.motion.damping_cs);
   double& fraction = o.marching.hydrodynamic_fraction;
   fraction = s.Number("hydrodynamic_fraction", fraction);
   if (!(fraction > 0.0 && fraction <= 1.0))

@@ -1,8 +1,10 @@
 #include "io/seas_config.h"
 
 #include <set>
+#include <sstream>
 #include <string>
 
+#include "evaluation/validity_envelope.h"
 #include "seas/sea_state_line.h"
 
 namespace hullopt::io {
@@ -23,6 +25,26 @@ std::string WhereMap(const YamlMap& map) {
   throw InputError(WhereMap(map) + ": " + error);
 }
 
+std::string Short(double v) {
+  std::ostringstream os;
+  os.precision(4);
+  os << v;
+  return os.str();
+}
+
+// Standard gravity: a sea's steepness is a property of the sea, read before the water block.
+constexpr double kStandardGravity = 9.80665;
+
+// The steepness Hs/lambda_p beyond the envelope's hard limit (breaking) is refused as the sea is read; a steep
+// sea within it is flagged with the evaluation's results (eval::ResponseEnvelopeWarnings).
+std::string SteepnessRefusal(const sk::SeaState& s) {
+  const double lambda_p = eval::PeakWaveLength(s, kStandardGravity);
+  for (const auto& f : eval::CheckEnvelopeValue(eval::EnvelopeQuantity::kWaveSteepness, s.Hs_m / lambda_p, "Hs_m",
+                                                "Hs " + Short(s.Hs_m) + " m, peak wave length " + Short(lambda_p) + " m"))
+    if (f.refuse) return f.message;
+  return "";
+}
+
 }  // namespace
 
 sk::SeaState ReadSeaState(YamlMap& m) {
@@ -38,6 +60,8 @@ sk::SeaState ReadSeaState(YamlMap& m) {
   m.Finish();
   std::string error;
   if (!s.IsValid(&error)) FailWithRule(m, error);
+  const std::string steep = SteepnessRefusal(s);
+  if (!steep.empty()) m.Fail("Hs_m", steep);
   return s;
 }
 
@@ -59,6 +83,8 @@ std::vector<sk::SeaState> ReadSeas(YamlMap& root) {
       if (!s.IsValid(&error))
         throw InputError(line.Where(error.rfind("gamma", 0) == 0 ? "gamma" : "Hs_m") + ": element " +
                          std::to_string(i + 1) + ": " + error);
+      const std::string steep = SteepnessRefusal(s);
+      if (!steep.empty()) throw InputError(line.Where("Hs_m") + ": element " + std::to_string(i + 1) + ": " + steep);
       seas.push_back(s);
     }
   }

@@ -5,6 +5,7 @@
 
 #include "io/config_path.h"
 #include "io/offsets_csv.h"
+#include "io/water_config.h"
 #include "parametric_hull/section_geometry.h"
 
 namespace hullopt::io {
@@ -135,9 +136,13 @@ SectionRunConfig ReadSectionConfig(YamlMap& root) {
 
   YamlMap w = root.MapOrEmpty("water");
   cfg.rho_kg_m3 = w.Number("rho_kg_m3", 1025.0);
-  if (!(cfg.rho_kg_m3 > 0)) w.Fail("rho_kg_m3", "must be > 0");
+  RefuseOutsideEnvelope(w, "rho_kg_m3", eval::EnvelopeQuantity::kWaterDensity, cfg.rho_kg_m3);
   cfg.g_m_s2 = w.Number("g_m_s2", 9.81);
-  if (!(cfg.g_m_s2 > 0)) w.Fail("g_m_s2", "must be > 0");
+  RefuseOutsideEnvelope(w, "g_m_s2", eval::EnvelopeQuantity::kGravity, cfg.g_m_s2);
+  eval::EnvelopeInput env;
+  env.rho_kg_m3 = cfg.rho_kg_m3;
+  env.g_m_s2 = cfg.g_m_s2;
+  for (const auto& finding : eval::CheckEnvelope(env)) cfg.warnings.push_back(finding.message);
   w.Finish();
   root.Finish();
   return cfg;

@@ -27,6 +27,8 @@ struct SectionRunConfig {
   double rho_kg_m3 = 1025.0;
   double g_m_s2 = 9.81;
   std::string shape_name;  ///< as in the config
+  /// Validity-envelope flags of the water (evaluation/validity_envelope.h): stderr and the plot's footnote.
+  std::vector<std::string> warnings;
 };
 
 /// Reads the `section:` and `water:` blocks of root (other top-level blocks of a campaign file are skipped;

@@ -1,14 +1,21 @@
 #include "io/water_config.h"
 
+#include "evaluation/validity_envelope.h"
+
 namespace hullopt::io {
+
+void RefuseOutsideEnvelope(const YamlMap& map, const std::string& key, eval::EnvelopeQuantity q, double value) {
+  for (const auto& f : eval::CheckEnvelopeValue(q, value, key))
+    if (f.refuse) map.Fail(key, f.message);
+}
 
 WaterOptions ParseWater(YamlMap& root) {
   WaterOptions w;
   YamlMap m = root.MapOrEmpty("water");
   w.rho_kg_m3 = m.Number("rho_kg_m3", w.rho_kg_m3);
-  if (!(w.rho_kg_m3 >= 500.0 && w.rho_kg_m3 <= 2000.0)) m.Fail("rho_kg_m3", "must lie in [500, 2000] kg/m^3");
+  RefuseOutsideEnvelope(m, "rho_kg_m3", eval::EnvelopeQuantity::kWaterDensity, w.rho_kg_m3);
   w.g_m_s2 = m.Number("g_m_s2", w.g_m_s2);
-  if (!(w.g_m_s2 > 0.0 && w.g_m_s2 < 100.0)) m.Fail("g_m_s2", "must lie in (0, 100) m/s^2");
+  RefuseOutsideEnvelope(m, "g_m_s2", eval::EnvelopeQuantity::kGravity, w.g_m_s2);
   m.Finish();
   return w;
 }

@@ -16,6 +16,8 @@
 #include <vector>
 
 #include "app/commands.h"
+#include "evaluation/hull_plausibility.h"
+#include "evaluation/validity_envelope.h"
 #include "io/design_config.h"
 #include "hullopt/hullopt.h"
 #include "io/hull_config.h"
@@ -265,12 +267,25 @@ PYBIND11_MODULE(_hullopt, m) {
         const io::SolverConfig sc = io::ParseSolverConfig(sm, /*frequencies_required=*/false);
         sm.Finish();
         const sk::RaoSolverOptions o = eval::RaoOptions(sc, name, sc.cs());
+        // The method's validity envelope, as the commands apply it: refused beyond a hard limit (ValueError),
+        // flagged in the returned warnings (a speed in knots given as m/s is flagged or refused here).
+        const hull::Hydrostatics hs = hull::ComputeHydrostatics(h, w.rho_kg_m3);
+        eval::EnvelopeInput env;
+        env.rho_kg_m3 = w.rho_kg_m3;
+        env.g_m_s2 = w.g_m_s2;
+        env.speed_m_s = speed_m_s;
+        env.cs = sc.cs();
+        env.hull = &h;
+        env.hs = &hs;
+        env.mass = &mass;
+        const std::vector<std::string> flags = eval::ApplyEnvelope(eval::CheckEnvelope(env), "hull '" + name + "'");
         sk::RaoTable t;
         {
           py::gil_scoped_release release;
           t = sk::ComputeRaos(h, mass, speed_m_s, w.rho_kg_m3, w.g_m_s2, omega, o,
                               sk::TransientGreenKernelBuilder(sc.sectional_force, sc.body_potential));
         }
+        t.warnings.insert(t.warnings.begin(), flags.begin(), flags.end());
         return RaoDict(t);
       },
       py::arg("hull"), py::arg("mass"), py::arg("speed_m_s"), py::arg("omega_rad_s"),
@@ -295,9 +310,17 @@ PYBIND11_MODULE(_hullopt, m) {
         options.msi = io::ReadMsiOptions(rm);
         rm.Finish();
         const sk::DesignEvaluation ev = sk::EvaluateDesign(RaoFromDict(rao), ExtentOf(hs, mass), sea_list, {}, options);
+        const std::vector<std::string> flags = eval::ResponseEnvelopeWarnings(ev, w.g_m_s2);
         py::list out;
-        for (const auto& s : ev.seas) {
+        for (std::size_t i = 0; i < ev.seas.size(); ++i) {
+          const auto& s = ev.seas[i];
           py::dict d;
+          // The validity-envelope flags of this sea (steepness, rms acceleration above 1 g).
+          std::vector<std::string> sea_flags;
+          const std::string tag = "(sea " + std::to_string(i + 1) + " (";
+          for (const auto& f : flags)
+            if (f.find(tag) != std::string::npos) sea_flags.push_back(f);
+          d["warnings"] = sea_flags;
           d["Hs_m"] = s.sea.Hs_m;
           d["Tz_s"] = s.Tz_s;
           d["Tp_s"] = s.Tp_s;
@@ -316,7 +339,7 @@ PYBIND11_MODULE(_hullopt, m) {
       "rms vertical accelerations and MSI per head sea at the forward, LCG and transom positions and their "
       "mean. seas: a list of dicts as a config's seas: list (Hs_m [m], Tz_s or Tp_s [s], spectrum, gamma); "
       "msi: a dict as the msi: block. Returns one dict per sea with positions (rms_accel_g [g], msi_pct [%], "
-      "...) and mean.");
+      "...), mean and warnings (the validity envelope's flags of that sea: steepness, rms acceleration above 1 g).");
 
   m.def(
       "evaluation_frequencies", [](int count) { return Array(eval::EvaluationFrequencies(count)); },

@@ -329,6 +329,154 @@ operability: { scatter_csv: route_one.csv, criteria: [ { msi_max_pct: 20 } ] }
 optimize: { variables: { L_over_B: [8, 16] }, objective: { measure: scatter_msi, sea_weights: [1] } }"
 run op_weights 1 "the cells' probabilities weight them" - -- optimize "$T/op_weights.yaml" --out "$T/o63"
 
+# ---- the validity envelope (evaluation/validity_envelope.cpp) ------------------------------------------------
+SMALL='solver: { sections: 10, panels: 6, frequencies: { lambda_over_L: [1.0, 1.5, 2.0] } }'
+SEA='seas: [ { Hs_m: 1.0, Tz_s: 5.0 } ]'
+DESC='`design`: a 1 t catamaran at 40 kn (Fn 2.55, Fn_vol 6.6: planing)'
+w env_1t "hull: { parametric: { type: catamaran, displacement_t: 1, L_over_B: 11, B_over_T: 2, Cb: 0.4, Cp: 0.69, Cwp: 0.76, LCB_pct_L: -6.4, LCF_pct_L: -8.3, stations: 21, section_points: 10 } }
+speed: { kn: 40 }
+solver: { sections: 10, panels: 6 }
+$SEA"
+run env_1t 1 "key 'speed': Fn_vol = 6.597" - -- design "$T/env_1t.yaml" --out "$T/e64"
+DESC='`speed: { Fn: 3 }`'
+w env_fn3 "hull: { parametric: { $Q } }
+speed: { Fn: 3 }
+$SMALL"
+run env_fn3 1 "key 'speed': Fn_vol = " - -- rao "$T/env_fn3.yaml" --out "$T/e65"
+DESC='`speed: { m_s: 74 }`'
+w env_74 "hull: { parametric: { $Q } }
+speed: { m_s: 74 }
+$SMALL"
+run env_74 1 "key 'speed': Fn_vol = 7.502 (U 74 m/s = 143.8 kn, V^(1/3) 9.918 m) is outside the method's validity envelope [0, 6]" - -- rao "$T/env_74.yaml" --out "$T/e66"
+DESC='40 kn given as `m_s: 40` (warning case)'
+w env_kn_ms "hull: { parametric: { $Q } }
+speed: { m_s: 40 }
+$SMALL"
+run env_kn_ms 0 "Fn_vol = 4.055" "{T}/e67/rao.csv" -- rao "$T/env_kn_ms.yaml" --out "$T/e67"
+DESC='`design` in Hs 30 m at Tz 5 s (JONSWAP: Tp 6.4 s, steepness 0.46)'
+w env_hs30 "hull: { parametric: { $Q } }
+speed: { kn: 40 }
+solver: { sections: 10, panels: 6 }
+seas: [ { Hs_m: 30, Tz_s: 5 } ]"
+run env_hs30 1 "key 'seas[0].Hs_m' = 30: Hs/lambda_p = 0.4647" - -- design "$T/env_hs30.yaml" --out "$T/e68"
+DESC='`evaluate` in Hs 12 m at Tz 7.5 s: steep sea and rms acceleration above 1 g (warning case)'
+printf '%s\n' "name: steep" "hull_extent: { cg_to_transom_m: 18.0, cg_to_bow_m: 24.0 }" "speed: { kn: 40 }" \
+  "seas: [ { Hs_m: 12.0, Tz_s: 7.5 } ]" "rao_csv: $PWD/$R" > "$T/env_steep.yaml"
+run env_steep 0 "Hs/lambda_p = 0.08" "{T}/e69/summary.json" -- evaluate "$T/env_steep.yaml" --out "$T/e69"
+for f in "$T/env_steep.err" "$T/e69/summary.json"; do  # the second flag of this run
+  grep -qF "rms a/g = 1.774" "$f" || { echo "FAIL env_steep: rms acceleration above 1 g not flagged in $f"; fail=1; }
+done
+DESC='`Cs: 100`'
+w env_cs "hull: { parametric: { $Q } }
+speed: { kn: 40 }
+solver: { Cs: 100, sections: 10, panels: 6, frequencies: { lambda_over_L: [1.0, 1.5, 2.0] } }"
+run env_cs 1 "key 'solver.Cs' = 100: Cs = 100 is outside the method's validity envelope [0, 1]" - -- rao "$T/env_cs.yaml" --out "$T/e70"
+DESC='`Cs: 0.5` (warning case)'
+w env_cs_flag "hull: { parametric: { $Q } }
+speed: { kn: 40 }
+solver: { Cs: 0.5, sections: 10, panels: 6, frequencies: { lambda_over_L: [1.0, 1.5, 2.0] } }"
+run env_cs_flag 0 "Cs = 0.5 is outside the usual range [0, 0.2]" "{T}/e71/rao.csv" -- rao "$T/env_cs_flag.yaml" --out "$T/e71"
+DESC='`g_m_s2: 1`'
+w env_g "hull: { parametric: { $Q } }
+water: { rho_kg_m3: 1025, g_m_s2: 1 }
+speed: { kn: 40 }
+solver: { sections: 10, panels: 6 }
+$SEA"
+run env_g 1 "key 'water.g_m_s2' = 1: g = 1 is outside the method's validity envelope [9.5, 10.5]" - -- design "$T/env_g.yaml" --out "$T/e72"
+DESC='`g_m_s2: 10` (warning case)'
+w env_g10 "hull: { parametric: { $P } }
+water: { rho_kg_m3: 1025, g_m_s2: 10 }"
+run env_g10 0 "g = 10 is outside the usual range [9.78, 9.84]" "{T}/e73/hydrostatics.json" -- hull "$T/env_g10.yaml" --out "$T/e73"
+DESC='`section` with `rho_kg_m3: 1.025` (t/m^3)'
+w env_sec_rho "section: { shape: semicircle, radius_m: 1.0, panels: 28, method: [frequency_domain], frequencies: { omega_min_rad_s: 0.5, omega_max_rad_s: 5.5, count: 3 } }
+water: { rho_kg_m3: 1.025, g_m_s2: 9.81 }"
+run env_sec_rho 1 "key 'water.rho_kg_m3' = 1.025: rho = 1.025 is outside the method's validity envelope [900, 1100]" - -- section "$T/env_sec_rho.yaml" --out "$T/e74"
+DESC='`section` with `g_m_s2: 9.0`'
+w env_sec_g "section: { shape: semicircle, radius_m: 1.0, panels: 28, method: [frequency_domain], frequencies: { omega_min_rad_s: 0.5, omega_max_rad_s: 5.5, count: 3 } }
+water: { rho_kg_m3: 1025, g_m_s2: 9.0 }"
+run env_sec_g 1 "key 'water.g_m_s2' = 9.0: g = 9 is outside" - -- section "$T/env_sec_g.yaml" --out "$T/e75"
+DESC='demihulls 16 km apart (`spacing_m: 16000`)'
+w env_far "hull: { offsets_csv: $PWD/data/delft372/delft372_offsets.csv, draught_m: 0.15, hulls: 2, spacing_m: 16000 }"
+run env_far 1 "key 'hull': hull spacing/L = 5" - -- hull "$T/env_far.yaml" --out "$T/e76"
+DESC='`spacing_over_L: 1.0` (warning case)'
+w env_wide "hull: { parametric: { $P, spacing_over_L: 1.0 } }"
+run env_wide 0 "hull spacing/L = 1 (" "{T}/e77/hydrostatics.json" -- hull "$T/env_wide.yaml" --out "$T/e77"
+DESC='LCG 17 m forward of the LCB (static trim 5.7 deg)'
+w env_lcg "hull: { parametric: { $Q } }
+mass: { lcg_m_from_ap: 46.0 }
+speed: { kn: 40 }
+$SMALL"
+run env_lcg 1 "key 'mass.lcg_m_from_ap': static trim (deg) = 5.735" - -- rao "$T/env_lcg.yaml" --out "$T/e78"
+DESC='LCG 3 m forward of the LCB (warning case)'
+w env_lcg_flag "hull: { parametric: { $P } }
+mass: { lcg_m_from_ap: 32.0 }"
+run env_lcg_flag 0 "static trim (deg) = 1.007" "{T}/e79/hydrostatics.json" -- hull "$T/env_lcg_flag.yaml" --out "$T/e79"
+DESC='`kg_m: 25` on a hull 4.9 m deep'
+w env_kg "hull: { parametric: { $P } }
+mass: { kg_m: 25 }"
+run env_kg 1 "key 'mass.kg_m': KG/D = 5.1" - -- hull "$T/env_kg.yaml" --out "$T/e80"
+DESC='`kg_m: 12` on a hull 4.9 m deep (warning case)'
+w env_kg_flag "hull: { parametric: { $P } }
+mass: { kg_m: 12 }"
+run env_kg_flag 0 "KG/D = 2.4" "{T}/e81/hydrostatics.json" -- hull "$T/env_kg_flag.yaml" --out "$T/e81"
+DESC='an STL and its draught both in millimetres (a 60 km hull)'
+stl_box() {  # stl_box FILE L B D: a closed box, x 0..L, y -B/2..B/2, z 0..D
+  local f="$1" L="$2" b; b=$(awk "BEGIN { print $3 / 2 }"); local D="$4"
+  tri() { printf ' facet normal 0 0 0\n  outer loop\n   vertex %s\n   vertex %s\n   vertex %s\n  endloop\n endfacet\n' "$1" "$2" "$3"; }
+  { echo "solid box"
+    tri "0 -$b 0" "$L -$b 0" "$L $b 0"; tri "0 -$b 0" "$L $b 0" "0 $b 0"
+    tri "0 -$b $D" "$L $b $D" "$L -$b $D"; tri "0 -$b $D" "0 $b $D" "$L $b $D"
+    tri "0 -$b 0" "0 -$b $D" "$L -$b $D"; tri "0 -$b 0" "$L -$b $D" "$L -$b 0"
+    tri "0 $b 0" "$L $b $D" "0 $b $D"; tri "0 $b 0" "$L $b 0" "$L $b $D"
+    tri "0 -$b 0" "0 $b $D" "0 -$b $D"; tri "0 -$b 0" "0 $b 0" "0 $b $D"
+    tri "$L -$b 0" "$L -$b $D" "$L $b $D"; tri "$L -$b 0" "$L $b $D" "$L $b 0"
+    echo "endsolid box"; } > "$f"
+}
+stl_box "$T/box_mm.stl" 60000 6000 4000
+w env_stl_mm "hull: { stl: $T/box_mm.stl, draught_m: 2000 }"
+run env_stl_mm 1 "key 'hull': L = 6e+04" - -- hull "$T/env_stl_mm.yaml" --out "$T/e82"
+DESC='`calibrate` started at `Cs_initial: 50`'
+w env_cal50 "speed: { Fn: 0.75 }
+calibrate: { data: [$PWD/data/delft372/delft372_tank_rao_fn075.csv], mode: single, Cs_initial: 50, $CAL_MODEL }"
+run env_cal50 1 "key 'calibrate.Cs_initial' = 50: Cs = 50 is outside the method's validity envelope [0, 1]" - -- calibrate "$T/env_cal50.yaml" --out "$T/e83"
+DESC='`calibrate` whose fitted Cs is not physical (warning case: not converged, no calibrated_solver.yaml)'
+w env_cal_wild "speed: { Fn: 0.75 }
+calibrate: { data: [$PWD/data/delft372/delft372_tank_rao_fn075.csv], mode: single, Cs_initial: 0.05, model: { synthetic_oscillator: { heave_natural_rad_s: 8.1, pitch_natural_rad_s: 8.4, heave_zeta0: 0.01, pitch_zeta0: 0.01, heave_zeta_per_Cs: 0.05, pitch_zeta_per_Cs: 0.05, length_m: 3.0 } } }"
+run env_cal_wild 0 "the fit is not converged to a physical Cs" "{T}/e84/calibration.json" -- calibrate "$T/env_cal_wild.yaml" --out "$T/e84"
+[ ! -e "$T/e84/calibrated_solver.yaml" ] || { echo "FAIL env_cal_wild: calibrated_solver.yaml written for an unphysical fit"; fail=1; }
+grep -q '"converged": false' "$T/e84/calibration.json" 2>/dev/null || { echo "FAIL env_cal_wild: calibration.json does not say converged false"; fail=1; }
+DESC='`resistance` up to 150 kn'
+w env_res "hull: { parametric: { $P } }
+resistance: { speeds_kn: [30, 150] }"
+run env_res 1 "key 'resistance': Fn = 3.019 (U 77.17 m/s = 150 kn, L 66.58 m) is outside the method's validity envelope [0, 3]" - -- resistance "$T/env_res.yaml" --out "$T/e85"
+DESC='`explore` with `g_m_s2: 1`'
+w env_explore_g "${OPT/g_m_s2: 9.81/g_m_s2: 1}
+$SMALL
+explore: { variables: { L_over_B: [8, 16] }, samples: 2 }"
+run env_explore_g 1 "key 'water.g_m_s2' = 1" - -- explore "$T/env_explore_g.yaml" --out "$T/e86"
+DESC='`coefficients` with `Cs: 100`'
+w env_coef_cs "hull: { parametric: { $P } }
+speed: { kn: 40 }
+solver: { Cs: 100, sections: 10, panels: 6, frequencies: { lambda_over_L: [1.0, 2.0] } }"
+run env_coef_cs 1 "key 'solver.Cs' = 100" - -- coefficients "$T/env_coef_cs.yaml" --out "$T/e87"
+DESC='`evaluate` from a rao.csv with `water: { g_m_s2: 1 }`'
+printf '%s\n' "name: g1" "hull_extent: { cg_to_transom_m: 18.0, cg_to_bow_m: 24.0 }" "speed: { kn: 40 }" \
+  "water: { g_m_s2: 1 }" "$SEA" "rao_csv: $PWD/$R" > "$T/env_eval_g.yaml"
+run env_eval_g 1 "key 'water.g_m_s2' = 1" - -- evaluate "$T/env_eval_g.yaml" --out "$T/e88"
+
+DESC='`explore` resumed with one samples.csv row edited consistently (objective and per-sea MSI) to be the best'
+w env_resume "hull: { parametric: { $Q } }
+speed: { kn: 40 }
+solver: { sections: 10, panels: 6 }
+seas: [ { Hs_m: 1.0, Tz_s: 5.5 }, { Hs_m: 3.0, Tz_s: 7.5 } ]
+explore: { samples: 8, method: lhs, variables: { L_over_B: [10, 12] }, objective: { measure: msi, position: mean, sea_weights: [1, 1] } }"
+"$BIN" explore "$T/env_resume.yaml" --out "$T/e89" --quiet > /dev/null 2>&1
+# Line 7 is sample 5, outside the spot sample of 8 rows (samples 0, 2, 4, 7).
+awk -F, -v OFS=, 'NR == 1 { for (i = 1; i <= NF; ++i) { if ($i ~ /^msi_pct_/) s[i] = 1; if ($i == "objective") o = i } }
+                  NR == 7 { for (i in s) $i = "0.01"; $o = "0.01" } { print }' "$T/e89/samples.csv" > "$T/edited.csv"
+mv "$T/edited.csv" "$T/e89/samples.csv"
+run env_resume 1 "samples.csv:7: column 'objective' = 0.01: the design gives" - -- explore "$T/env_resume.yaml" --out "$T/e89" --quiet
+
 # Not a row: without a mass block, hydrostatics.json's KG is the documented default, the draught.
 w nomass "hull: { parametric: { $P } }"
 if "$BIN" hull "$T/nomass.yaml" --out "$T/nomass" > /dev/null 2>&1; then

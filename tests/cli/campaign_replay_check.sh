@@ -106,5 +106,19 @@ awk -F, -v OFS=, -v c="$c" -v co="$co" 'NR==4{$c=sprintf("%.17g", $c + 1); $co=s
 grep -q "samples.csv:4: column '\(objective\|$sea\)'.*the design gives.*spot check" "$work/msi_consistent.err" ||
   { cat "$work/msi_consistent.err" >&2; fail "MSI: consistent edit of the last row not caught by the spot check"; }
 echo "ok: MSI consistent edit refused: $(cut -c1-200 "$work/msi_consistent.err")"
+# A consistent edit of a row the spot sample does not cover, making it the best: the best rows are recomputed
+# too, so the edited row is refused instead of being reported as the best design.
+sed 's/samples: 3/samples: 8/' "$work/msi.yaml" > "$work/msi8.yaml"
+"$HULLOPT" explore "$work/msi8.yaml" --out "$work/msi8" --quiet 2> "$work/msi8.err" || { cat "$work/msi8.err" >&2; fail "MSI explore (8 samples) failed"; }
+rm -rf "$work/msi8_best"; cp -r "$work/msi8" "$work/msi8_best"
+# Line 7 is sample 5: the spot sample of 8 rows is samples 0, 2, 4 and 7.
+awk -F, -v OFS=, 'NR == 1 { for (i = 1; i <= NF; ++i) { if ($i ~ /^msi_pct_/) s[i] = 1; if ($i == "objective") o = i } }
+                  NR == 7 { for (i in s) $i = "0.01"; $o = "0.01" } { print }' \
+  "$work/msi8/samples.csv" > "$work/msi8_best/samples.csv"
+"$HULLOPT" explore "$work/msi8.yaml" --out "$work/msi8_best" --quiet 2> "$work/msi8_best.err" &&
+  fail "MSI: a row edited to be the best was accepted (and reported as the best design)"
+grep -q "samples.csv:7: column .*the design gives.*spot check" "$work/msi8_best.err" ||
+  { cat "$work/msi8_best.err" >&2; fail "MSI: the edited best row is not named"; }
+echo "ok: edited best row refused: $(cut -c1-200 "$work/msi8_best.err")"
 [ "$failed" -eq 0 ] || exit 1
 echo "PASS: replay checks"

@@ -157,3 +157,23 @@ def test_run_a_command_in_process(tmp_path):
     assert (tmp_path / "h" / "hydrostatics.json").exists()
     with pytest.raises(hullopt.InputError):
         hullopt.run(["hull", str(tmp_path / "missing.yaml"), "--out", str(tmp_path / "h2")])
+
+
+def test_knots_given_as_metres_per_second_are_flagged_and_absurd_speeds_refused():
+    """The validity envelope applies to the module as to the commands: 40 (knots) passed as m/s is Fn 1.5 and
+    Fn_vol 4.1 on the NPL 5b-like catamaran (flagged: planing), 74 m/s is Fn_vol 7.5 (refused)."""
+    hull = hullopt.generate_hull(hullopt.DesignVariables(**NPL5B))
+    mass = hullopt.mass_properties(hull)
+    rao = hullopt.compute_raos(hull, mass, 40.0, [0.6, 1.0], solver={"sections": 10, "panels": 6})
+    assert any(w.startswith("Fn_vol = 4.") for w in rao["warnings"]), rao["warnings"]
+    with pytest.raises(hullopt.InputError, match=r"key 'speed': .* validity envelope"):
+        hullopt.compute_raos(hull, mass, 74.0, [0.6, 1.0], solver={"sections": 10, "panels": 6})
+
+
+def test_a_steep_sea_is_flagged_in_the_evaluation():
+    hull = hullopt.generate_hull(hullopt.DesignVariables(**NPL5B))
+    mass = hullopt.mass_properties(hull)
+    rao = hullopt.compute_raos(hull, mass, SPEED_M_S, hullopt.evaluation_frequencies(), solver={"sections": 10, "panels": 6})
+    seas = hullopt.evaluate(rao, hull, mass, [{"Hs_m": 1.0, "Tz_s": 5.0}, {"Hs_m": 6.0, "Tz_s": 5.0}])
+    assert seas[0]["warnings"] == []
+    assert any(w.startswith("Hs/lambda_p = ") for w in seas[1]["warnings"]), seas[1]["warnings"]
