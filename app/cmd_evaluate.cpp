@@ -113,11 +113,15 @@ DesignInput ReadDesign(io::YamlMap& m, double g, bool single) {
     in.design.group = m.String("group", "");
     const double cs = m.Has("Cs") ? m.Number("Cs") : -1.0;
     if (m.Has("Cs") && cs < 0) m.Fail("Cs", "must be >= 0");
+    if (m.Has("Cs")) io::RefuseOutsideEnvelope(m, "Cs", eval::EnvelopeQuantity::kDampingCs, cs);
     io::YamlMap params = m.MapOrEmpty("parameters");
     for (const auto& key : params.Keys()) in.design.parameters[key] = params.Number(key);
     params.Finish();
     io::YamlMap design_root = io::YamlMap::LoadFile(file);
     LoadComputedDesign(design_root, file, &in, cs);
+    if (m.Has("Cs"))  // the override's flag, as the design's own solver.Cs is flagged when it is read
+      for (const auto& f : eval::CheckEnvelopeValue(eval::EnvelopeQuantity::kDampingCs, cs, "Cs"))
+        in.computed->input_warnings.push_back(f.message);
     if (std::abs(g - design_root.resolved()["water"]["g_m_s2"].as<double>(g)) > 1e-9)
       throw io::InputError(in.where + ": the design's g differs from the evaluation's water.g_m_s2");
     return in;
