@@ -129,7 +129,7 @@ TEST_CASE("bad hull inputs: one line naming key or line and the rule", "[hull-co
   Write("good.csv", kGoodCsv);
   CheckOneLine(Run(Offsets("good.csv") + "  hulls: 2\n"), "hull.spacing_m", "must be > 0");
   // 19 water density out of range
-  CheckOneLine(Run(Param("") + "water: {rho_kg_m3: 10}\n"), "water.rho_kg_m3", "must lie in [500, 2000]");
+  CheckOneLine(Run(Param("") + "water: {rho_kg_m3: 10}\n"), "water.rho_kg_m3", "is outside the method's validity envelope [900, 1100]");
   // 20 Cwp / LCF beyond what any waterplane can do
   CheckOneLine(Run(kParam.substr(0, kParam.find("Cwp")) + "Cwp: 0.95, LCB_pct_L: -6.4, LCF_pct_L: -9}\n"),
                "LCF_pct_L = -9", "rule");
