@@ -109,8 +109,8 @@ BENCHMARK(BM_KernelBuildCellFaces)
     ->UseRealTime()
     ->Iterations(1);
 
-// The reference paper's written sectional force (SectionalForce::kPressure): the extra rows of the earlier
-// potentials on each contour, on the default cell-face steps.
+// The reference paper's written sectional force (SectionalForce::kPressure): the transport rows of the moving
+// contour beside the momentum rows (same table work), on the default cell-face steps.
 void BM_KernelBuildPressureForm(benchmark::State& state) {
   const auto& d = TheDemihull();
   SetThreads(static_cast<int>(state.range(0)));
