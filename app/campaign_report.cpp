@@ -6,10 +6,10 @@
 
 #include "app/output_dir.h"
 #include "app/single_design.h"
-#include "io/bodyplan_svg.h"
-#include "io/html_report.h"
-#include "io/rao_plot.h"
-#include "io/yaml_map.h"
+#include "io/report/bodyplan_svg.h"
+#include "io/report/html_report.h"
+#include "io/report/rao_plot.h"
+#include "io/config/yaml_map.h"
 
 namespace hullopt::app {
 namespace {
