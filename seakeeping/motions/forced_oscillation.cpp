@@ -56,6 +56,8 @@ bool ForcedOscillationOptions::IsValid(std::string* error) const {
     os << "amplitude = " << amplitude << ": must be > 0";
   } else if (!(omega_e_rad_s > 0.0) || !std::isfinite(omega_e_rad_s)) {
     os << "omega_e = " << omega_e_rad_s << " rad/s: must be > 0";
+  } else if (!(damping_cs >= 0.0) || !std::isfinite(damping_cs)) {
+    os << "damping Cs = " << damping_cs << ": must be >= 0";
   } else if (!(ramp_periods >= 0.0) || !std::isfinite(ramp_periods)) {
     os << "ramp_periods = " << ramp_periods << ": must be >= 0";
   } else if (analysed_periods < 1) {
@@ -185,7 +187,9 @@ ForcedOscillationResult SimulateForcedOscillation(const hull::HullForm& at_rest,
   if (!failure.empty()) throw std::domain_error(failure);
   r.strips = S;
 
-  // The hull's force at each analysed time: the strips on the hull plus the buoyancy of its sections.
+  // The hull's force at each analysed time: the strips on the hull, the buoyancy of its sections and the Cs
+  // damping on their waterline beams.
+  const double damping = 0.5 * options.damping_cs * rho_kg_m3 * speed_m_s;
   const int J = j1 - j0 + 1;
   Eigen::MatrixXd basis(J, 5);
   Eigen::MatrixXd force(J, 2);
@@ -193,8 +197,9 @@ ForcedOscillationResult SimulateForcedOscillation(const hull::HullForm& at_rest,
     const double t = j * dt;
     double F3 = 0, F5 = 0;
     for (int n = 0; n < steps; ++n) {
-      const double buoyancy = rho_kg_m3 * g_m_s2 * Sums(hull, x[n], draught(n, t), geo).area_m2;
-      const double fn = (f[j - n - s0][n] + buoyancy) * weight[n];
+      const SectionSums sec = Sums(hull, x[n], draught(n, t), geo);
+      const double buoyancy = rho_kg_m3 * g_m_s2 * sec.area_m2;
+      const double fn = (f[j - n - s0][n] + buoyancy - damping * sec.beam_m * vertical_velocity(n, t)) * weight[n];
       F3 += fn, F5 -= lever[n] * fn;
     }
     const int row = j - j0;

@@ -11,7 +11,8 @@
 // ẋ3 − (x − x_G) ẋ5 and the U x5 of a pitched hull passing the strip, and the wetted girth coming and going;
 // sections out of the water leave their step empty. A strip contributes to the hull only while the hull is in
 // it: what happens in the strip after the transom has passed cannot act on the hull, so no wake condition is
-// needed for the force. The hull force adds the buoyancy of the instantaneous sections (ρ g × area).
+// needed for the force. The hull force adds the buoyancy of the instantaneous sections (ρ g × area) and the
+// Cs damping.
 //
 // The force is reduced as the tank reduces it: the first harmonic of heave force and pitch moment over whole
 // periods after the start-up, per unit amplitude, with only the static restoring C_ij of the hull at rest
@@ -39,6 +40,9 @@ struct ForcedOscillationOptions {
   double omega_e_rad_s = 0.0;  ///< [rad/s] oscillation (encounter) frequency, > 0
   /// The steady running attitude the oscillation is about (even keel: the hull as given).
   hull::RunningAttitude attitude;
+  /// Cs [-] of the paper's sectional damping −½ Cs ρ U B v on each section's instantaneous waterline beam B and
+  /// vertical speed v (head_sea_ship_model.h), >= 0.
+  double damping_cs = 0.0;
   double ramp_periods = 1.0;  ///< periods over which the amplitude grows as ½(1 − cos πt/T_ramp), >= 0
   int analysed_periods = 2;   ///< whole periods of the first-harmonic analysis, after ramp and one hull passage
   bool IsValid(std::string* error) const;
