@@ -2,7 +2,7 @@
 // Fn 0.75, the paper's transient Green-function kernel). Periodic path (2b) with 1 and 2 OpenMP threads, the
 // time-marching path (2a) on the same sweep, and the kernel build (once per hull and speed) with 1 and 2
 // threads, also with the strip steps at the cell faces (41 steps, StationLayout::kCellFaces) and with the
-// paper's pressure form of the sectional force. Run:
+// paper's pressure form of the sectional force; one forced-oscillation run on the instantaneous hull. Run:
 // build/bench/bench_rao (quote medians with the core count).
 #include <benchmark/benchmark.h>
 #ifdef _OPENMP
@@ -11,6 +11,7 @@
 
 #include <cmath>
 
+#include "seakeeping/motions/forced_oscillation.h"
 #include "seakeeping/motions/frequency_list.h"
 #include "seakeeping/motions/head_sea_ship_model.h"
 #include "seakeeping/motions/periodic_motion_solver.h"
@@ -109,8 +110,8 @@ BENCHMARK(BM_KernelBuildCellFaces)
     ->UseRealTime()
     ->Iterations(1);
 
-// The reference paper's written sectional force (SectionalForce::kPressure): the extra rows of the earlier
-// potentials on each contour, on the default cell-face steps.
+// The reference paper's written sectional force (SectionalForce::kPressure): the transport rows of the moving
+// contour beside the momentum rows (same table work), on the default cell-face steps.
 void BM_KernelBuildPressureForm(benchmark::State& state) {
   const auto& d = TheDemihull();
   SetThreads(static_cast<int>(state.range(0)));
@@ -121,6 +122,24 @@ void BM_KernelBuildPressureForm(benchmark::State& state) {
   }
 }
 BENCHMARK(BM_KernelBuildPressureForm)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(1);
+
+// One forced-heave run on the instantaneous hull (sk::SimulateForcedOscillation): both demihulls of Delft 372
+// at Fn 0.75, 15 mm at ω_e 8.1 rad/s (ω √(L/g) 4.47, the heave resonance), 40 × 14, one ramp period and two
+// analysed periods: one strip's operators per time step of the record.
+void BM_ForcedOscillationRun(benchmark::State& state) {
+  const auto& d = TheDemihull();
+  SetThreads(static_cast<int>(state.range(0)));
+  sk::ForcedOscillationOptions o;
+  o.amplitude = 0.015;
+  o.omega_e_rad_s = 8.1;
+  o.damping_cs = 0.024;
+  hullopt::hull::MassProperties mass = hullopt::testing::Delft372Mass();
+  for (auto _ : state) {
+    const auto r = sk::SimulateForcedOscillation(d.hull, mass, d.speed, kRho, kG, o);
+    benchmark::DoNotOptimize(r.damping);
+  }
+}
+BENCHMARK(BM_ForcedOscillationRun)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(1);
 
 // Conventional strip theory (method: strip_theory_stf) on the same demihull: 10 wavelengths, every (station,
 // omega_e) section solved by the frequency-domain panel method (a fresh row cache per iteration).

@@ -26,6 +26,7 @@
 #include "io/config/seas_config.h"
 #include "io/config/water_config.h"
 #include "io/config/yaml_map.h"
+#include "seakeeping/motions/forced_oscillation.h"
 
 namespace py = pybind11;
 using namespace hullopt;
@@ -294,6 +295,50 @@ PYBIND11_MODULE(_hullopt, m) {
       "crest at the CG) at wave frequencies omega_rad_s [rad/s] (increasing) and speed speed_m_s [m/s]. "
       "solver: a dict as a config's solver: block (sections, panels, Cs, method, path, ...). Returns a dict "
       "of NumPy arrays omega_rad_s, omega_e_rad_s, heave, pitch and a list of warnings.");
+
+  m.def(
+      "forced_oscillation",
+      [](const hull::HullForm& h, const hull::MassProperties& mass, double speed_m_s, const std::string& mode,
+         double amplitude, double omega_e_rad_s, const std::string& sectional_force, int sections, int panels,
+         int body, double sinkage_m, double trim_deg, int analysed_periods, double cs, const py::object& water) {
+        const io::WaterOptions w = WaterOf(water);
+        sk::ForcedOscillationOptions o;
+        if (mode != "heave" && mode != "pitch") throw std::invalid_argument("mode must be 'heave' or 'pitch', got '" + mode + "'");
+        if (sectional_force != "momentum" && sectional_force != "pressure")
+          throw std::invalid_argument("sectional_force must be 'momentum' or 'pressure', got '" + sectional_force + "'");
+        o.mode = mode == "heave" ? sk::ForcedMode::kHeave : sk::ForcedMode::kPitch;
+        o.sectional_force = sectional_force == "pressure" ? sk::SectionalForce::kPressure : sk::SectionalForce::kMomentum;
+        o.amplitude = amplitude, o.omega_e_rad_s = omega_e_rad_s, o.analysed_periods = analysed_periods;
+        o.damping_cs = cs;
+        o.geometry.sections = sections, o.geometry.panels = panels, o.geometry.body = body;
+        o.attitude.sinkage_m = sinkage_m, o.attitude.trim_deg = trim_deg, o.attitude.pivot_x_m = mass.lcg_m_from_ap;
+        sk::ForcedOscillationResult r;
+        {
+          py::gil_scoped_release release;
+          r = sk::SimulateForcedOscillation(h, mass, speed_m_s, w.rho_kg_m3, w.g_m_s2, o);
+        }
+        py::dict d;
+        const bool heave = o.mode == sk::ForcedMode::kHeave;
+        d[heave ? "A33" : "A35"] = r.added_mass[0], d[heave ? "A53" : "A55"] = r.added_mass[1];
+        d[heave ? "B33" : "B35"] = r.damping[0], d[heave ? "B53" : "B55"] = r.damping[1];
+        d["static_restoring"] = py::make_tuple(r.static_restoring[0], r.static_restoring[1]);
+        d["mean_force_N"] = r.mean[0], d["mean_moment_N_m"] = r.mean[1];
+        d["second_harmonic_ratio"] = py::make_tuple(r.second_harmonic_ratio[0], r.second_harmonic_ratio[1]);
+        d["strips"] = r.strips;
+        d["time_s"] = Array(r.time_s), d["motion"] = Array(r.motion), d["force_N"] = Array(r.force_N),
+        d["moment_N_m"] = Array(r.moment_N_m);
+        return d;
+      },
+      py::arg("hull"), py::arg("mass"), py::arg("speed_m_s"), py::arg("mode"), py::arg("amplitude"),
+      py::arg("omega_e_rad_s"), py::arg("sectional_force") = "momentum", py::arg("sections") = 40,
+      py::arg("panels") = 14, py::arg("body") = -1, py::arg("sinkage_m") = 0.0, py::arg("trim_deg") = 0.0,
+      py::arg("analysed_periods") = 2, py::arg("Cs") = 0.0, py::arg("water") = py::none(),
+      "A forced heave ('heave', amplitude [m]) or pitch ('pitch', amplitude [rad], about the LCG) test at "
+      "omega_e_rad_s [rad/s] and speed_m_s [m/s], simulated with the strips on the instantaneous hull and "
+      "reduced as a tank reduces it (first harmonic, the static restoring at rest removed). sinkage_m (+ down) "
+      "and trim_deg (+ bow up) give the running attitude about the LCG; body -1 all bodies, else that body "
+      "alone; Cs the sectional damping coefficient. Returns a dict with the added mass and damping links [kg, kg m, kg m^2; per s], the mean force, "
+      "the second-harmonic ratio and the analysed record (NumPy arrays).");
 
   m.def(
       "evaluate",

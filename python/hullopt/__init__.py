@@ -5,6 +5,7 @@ One import names the public objects:
     DesignVariables, generate_hull, load_hull      parametric or read hulls
     hydrostatics, mass_properties                  displacement, coefficients, GM; mass properties
     compute_raos, evaluation_frequencies           heave and pitch RAOs (time-domain strip method or STF)
+    forced_oscillation                             a forced heave or pitch test on the instantaneous hull
     evaluate                                       rms vertical accelerations and MSI in head seas
     load_design, Design                            a design config as `hullopt evaluate` reads it
     run                                            any hullopt command in-process (campaigns)
@@ -22,6 +23,7 @@ from ._hullopt import (  # noqa: F401
     compute_raos,
     evaluate,
     evaluation_frequencies,
+    forced_oscillation,
     generate_hull,
     hydrostatics,
     load_design,

@@ -31,6 +31,58 @@ bool StripGeometryOptions::IsValid(std::string* error) const {
   return false;
 }
 
+std::vector<Panel> StripSectionPanels(const hull::HullForm& hull, double x, double T,
+                                      const StripGeometryOptions& options, std::vector<Panel>* contour) {
+  std::vector<Panel> panels;
+  if (contour) contour->clear();
+  for (std::size_t bi = 0; bi < hull.bodies.size(); ++bi) {
+    if (options.body >= 0 && options.body != static_cast<int>(bi)) continue;
+    const hull::Demihull* b = &hull.bodies[bi];
+    const hull::Station st = hull::InterpolateStation(*b, x);
+    const auto wet = hull::WettedContour(st, T);
+    if (wet.size() < 2) continue;  // dry here
+    std::vector<std::array<double, 2>> half;
+    for (const auto& p : wet) half.push_back({p[0], p[1] - T});
+    double girth = 0.0;
+    for (std::size_t i = 1; i < half.size(); ++i)
+      girth += std::hypot(half[i][0] - half[i - 1][0], half[i][1] - half[i - 1][1]);
+    if (girth <= 1e-9 * T) continue;  // keel exactly at the waterline: no wetted girth
+    // A section of zero thickness (a knife-edge stem, met at the bow face of kCellFaces) is a plate in its
+    // own plane: vertical motion does not disturb the water, and its panels would make a singular system.
+    double half_breadth = 0.0;
+    for (const auto& p : half) half_breadth = std::max(half_breadth, std::fabs(p[0]));
+    if (half_breadth <= 1e-9 * T) continue;
+    if (std::fabs(half.back()[1]) > 1e-9 * T) {
+      std::ostringstream os;
+      os << "body '" << b->role << "' at x = " << x
+         << " m: the section does not reach the waterline (contour ends " << -half.back()[1]
+         << " m below z = T = " << T << " m); extend the offsets above the draught";
+      throw std::domain_error(os.str());
+    }
+    const bool mirrored = options.body < 0 && b->y_centre_m > 0.0;
+    if (contour)  // the wetted polyline itself, both sides, and the mirror body's
+      for (double side : mirrored ? std::vector<double>{1.0, -1.0} : std::vector<double>{1.0})
+        for (std::size_t i = 1; i < half.size(); ++i)
+          for (double sign : {1.0, -1.0}) {
+            const double yc = side * b->y_centre_m;
+            contour->push_back({yc + sign * half[i - 1][0], half[i - 1][1], yc + sign * half[i][0], half[i][1]});
+          }
+    try {
+      auto ps = PanelSymmetricSection(half, options.panels, b->y_centre_m, options.spacing);
+      panels.insert(panels.end(), ps.begin(), ps.end());
+      if (mirrored) {  // the same panels shifted to the mirror demihull (y → y − 2 y_centre)
+        for (auto& p : ps) p.y1 -= 2.0 * b->y_centre_m, p.y2 -= 2.0 * b->y_centre_m;
+        panels.insert(panels.end(), ps.begin(), ps.end());
+      }
+    } catch (const std::invalid_argument& e) {
+      std::ostringstream os;
+      os << "body '" << b->role << "' at x = " << x << " m: " << e.what();
+      throw std::domain_error(os.str());
+    }
+  }
+  return panels;
+}
+
 StripKernel StripKernelGeometry(const hull::HullForm& hull, const StripGeometryOptions& options,
                                 double speed_m_s, double rho_kg_m3, double g_m_s2) {
   std::string err;
@@ -46,9 +98,6 @@ StripKernel StripKernelGeometry(const hull::HullForm& hull, const StripGeometryO
     throw std::invalid_argument("strip geometry: body index " + std::to_string(options.body) +
                                 " but the hull has " + std::to_string(hull.bodies.size()) + " bodies");
   if (!(hull.draught_m > 0.0)) throw std::invalid_argument("strip geometry: hull draught must be > 0");
-  std::vector<const hull::Demihull*> bodies;
-  for (std::size_t b = 0; b < hull.bodies.size(); ++b)
-    if (options.body < 0 || options.body == static_cast<int>(b)) bodies.push_back(&hull.bodies[b]);
   double x_aft = std::numeric_limits<double>::infinity(), x_fwd = -x_aft;
   for (const auto& body : hull.bodies) {  // the strip grid spans all bodies, so per-body kernels line up
     const auto* b = &body;
@@ -73,43 +122,7 @@ StripKernel StripKernelGeometry(const hull::HullForm& hull, const StripGeometryO
     const double x = options.layout == StationLayout::kCellFaces && n == options.sections
                          ? x_aft
                          : x_fwd - (n + offset) * k.dx_m;
-    std::vector<Panel> panels;
-    for (const auto* b : bodies) {
-      const hull::Station st = hull::InterpolateStation(*b, x);
-      const auto wet = hull::WettedContour(st, T);
-      if (wet.size() < 2) continue;  // dry here
-      std::vector<std::array<double, 2>> half;
-      for (const auto& p : wet) half.push_back({p[0], p[1] - T});
-      double girth = 0.0;
-      for (std::size_t i = 1; i < half.size(); ++i)
-        girth += std::hypot(half[i][0] - half[i - 1][0], half[i][1] - half[i - 1][1]);
-      if (girth <= 1e-9 * T) continue;  // keel exactly at the waterline: no wetted girth
-      // A section of zero thickness (a knife-edge stem, met at the bow face of kCellFaces) is a plate in its
-      // own plane: vertical motion does not disturb the water, and its panels would make a singular system.
-      double half_breadth = 0.0;
-      for (const auto& p : half) half_breadth = std::max(half_breadth, std::fabs(p[0]));
-      if (half_breadth <= 1e-9 * T) continue;
-      if (std::fabs(half.back()[1]) > 1e-9 * T) {
-        std::ostringstream os;
-        os << "body '" << b->role << "' at x = " << x
-           << " m: the section does not reach the waterline (contour ends " << -half.back()[1]
-           << " m below z = T = " << T << " m); extend the offsets above the draught";
-        throw std::domain_error(os.str());
-      }
-      const bool mirrored = options.body < 0 && b->y_centre_m > 0.0;
-      try {
-        auto ps = PanelSymmetricSection(half, options.panels, b->y_centre_m, options.spacing);
-        panels.insert(panels.end(), ps.begin(), ps.end());
-        if (mirrored) {  // the same panels shifted to the mirror demihull (y → y − 2 y_centre)
-          for (auto& p : ps) p.y1 -= 2.0 * b->y_centre_m, p.y2 -= 2.0 * b->y_centre_m;
-          panels.insert(panels.end(), ps.begin(), ps.end());
-        }
-      } catch (const std::invalid_argument& e) {
-        std::ostringstream os;
-        os << "body '" << b->role << "' at x = " << x << " m: " << e.what();
-        throw std::domain_error(os.str());
-      }
-    }
+    std::vector<Panel> panels = StripSectionPanels(hull, x, T, options);
     k.x_m.push_back(x);
     k.panels.push_back(std::move(panels));
   }

@@ -38,6 +38,14 @@ struct StripGeometryOptions {
 StripKernel StripKernelGeometry(const hull::HullForm& hull, const StripGeometryOptions& options,
                                 double speed_m_s, double rho_kg_m3, double g_m_s2);
 
+/// The panels of the bodies' sections at x_m [m from AP] (the bodies options.body selects, mirror pairs on
+/// both sides) cut at the waterline z = draught_m [m above the baseline] and shifted to z = 0 there: the
+/// section of one strip step. Empty where every body is dry. With `contour`, also the wetted contour itself
+/// (the segments of the hull's section polyline, both sides of every body, in no particular order), which the
+/// panels' chords approximate. Throws std::domain_error as StripKernelGeometry.
+std::vector<Panel> StripSectionPanels(const hull::HullForm& hull, double x_m, double draught_m,
+                                      const StripGeometryOptions& options, std::vector<Panel>* contour = nullptr);
+
 /// One strip kernel from independent ones on the same steps (same x_m, dx, dt): panels concatenated, force
 /// rows side by side, i.e. bodies in the same strips that do not see each other's disturbance. Used for
 /// "demihulls without interaction" and for checking the interaction effect. Throws std::invalid_argument on

@@ -48,17 +48,13 @@ StripKernel BuildStripKernel(const StripOperators& ops, const std::vector<double
       J[n] = j;
       auto at = [&](int k) -> const Eigen::RowVectorXd& { return k >= m ? J[k] : zero; };
       const auto c = ops.ForceStencil(n);
-      Eigen::RowVectorXd f;
-      if (ops.Force() == SectionalForce::kPressure) {
-        // The same difference stencil on the momenta of earlier potentials on THIS contour (φ_t at fixed
-        // points); sources before m are zero.
-        Eigen::RowVectorXd earlier[2] = {Eigen::RowVectorXd::Zero(Pm), Eigen::RowVectorXd::Zero(Pm)};
-        for (int s = 1; s <= 2; ++s)
-          for (int k = m; k <= n - s; ++k)
-            if (ops.PanelCount(k) > 0) earlier[s - 1].noalias() += ops.PressureMomentum(s, n, k) * S[k];
-        f = (c[0] * J[n] + c[1] * earlier[0] + c[2] * earlier[1]) / (2.0 * ops.Dt());
-      } else {
-        f = (c[0] * J[n] + c[1] * at(n - 1) + c[2] * at(n - 2)) / (2.0 * ops.Dt());
+      Eigen::RowVectorXd f = (c[0] * J[n] + c[1] * at(n - 1) + c[2] * at(n - 2)) / (2.0 * ops.Dt());
+      if (ops.Force() == SectionalForce::kPressure && Pn > 0) {
+        // Minus the moving contour's transport term (strip_operators.h); sources before m are zero.
+        f.noalias() -= ops.TransportCurrent(n) * S[n];
+        for (int k = m; k < n; ++k)
+          if (ops.PanelCount(k) > 0) f.noalias() -= ops.TransportMemory(n, k) * S[k];
+        if (n == m) f -= ops.TransportDirect(n);
       }
       if (!ops.MirrorReduced()) {
         K.force[n][m] = f;

@@ -12,14 +12,13 @@ void StripMarcher::PrepareHistory() {
   if (n >= ops_.Steps()) return;
   history_rhs_ = Eigen::VectorXd::Zero(ops_.PanelCount(n));
   history_momentum_ = 0;
-  earlier_momentum_ = {0.0, 0.0};
+  history_transport_ = 0;
   const bool pressure = ops_.Force() == SectionalForce::kPressure;
   for (int k = 0; k < n; ++k) {
     if (sources_[k].size() == 0) continue;
     if (history_rhs_.size() > 0) history_rhs_ += ops_.Memory(n, k) * sources_[k];
     history_momentum_ += ops_.MomentumMemory(n, k).dot(sources_[k]);
-    for (int s = 1; pressure && s <= 2; ++s)
-      if (k <= n - s) earlier_momentum_[s - 1] += ops_.PressureMomentum(s, n, k).dot(sources_[k]);
+    if (pressure && ops_.PanelCount(n) > 0) history_transport_ += ops_.TransportMemory(n, k).dot(sources_[k]);
   }
 }
 
@@ -36,10 +35,9 @@ StripMarcher::Pending StripMarcher::Compute(const Eigen::VectorXd& v) const {
   p.momentum = history_momentum_ + (p.sigma.size() ? ops_.MomentumCurrent(n).dot(p.sigma) : 0.0);
   auto at = [&](int k) { return k >= 0 ? momentum_[k] : 0.0; };
   const auto c = ops_.ForceStencil(n);
-  if (ops_.Force() == SectionalForce::kPressure)  // momenta of earlier potentials on this contour
-    p.force = (c[0] * p.momentum + c[1] * earlier_momentum_[0] + c[2] * earlier_momentum_[1]) / (2.0 * ops_.Dt());
-  else
-    p.force = (c[0] * p.momentum + c[1] * at(n - 1) + c[2] * at(n - 2)) / (2.0 * ops_.Dt());
+  p.force = (c[0] * p.momentum + c[1] * at(n - 1) + c[2] * at(n - 2)) / (2.0 * ops_.Dt());
+  if (ops_.Force() == SectionalForce::kPressure && v.size() > 0)  // minus the moving contour's transport term
+    p.force -= history_transport_ + ops_.TransportCurrent(n).dot(p.sigma) + ops_.TransportDirect(n).dot(v);
   return p;
 }
 

@@ -14,8 +14,9 @@
 // the motion; the momentum form is the one consistent with slender-body theory (it is what yields the −U
 // dA33/dx-type terms and the transom term) and with the neglected interaction between the steady displacement
 // flow and the unsteady potential; see docs/theory.md, "Sectional force in a strip whose section changes".
-// Operators built for SectionalForce::kPressure give the reference paper's written form instead: the same
-// stencil on the momenta of the earlier potentials on the current contour (φ_t at fixed points).
+// Operators built for SectionalForce::kPressure give the reference paper's written form instead, the
+// fixed-point pressure integral ρ∫φ_t n_z dl on the fluid side: dI/dt minus the moving contour's transport term
+// (StripOperators::TransportCurrent).
 #include <Eigen/Dense>
 #include <array>
 #include <vector>
@@ -54,7 +55,7 @@ class StripMarcher {
   std::vector<double> momentum_;
   Eigen::VectorXd history_rhs_;  // Σ_{k<n} Memory(n, k) σ_k for the next step n
   double history_momentum_ = 0;  // Σ_{k<n} MomentumMemory(n, k) σ_k
-  std::array<double, 2> earlier_momentum_{};  // pressure form: Σ_{k<=n−s} PressureMomentum(s, n, k) σ_k
+  double history_transport_ = 0;  // pressure form: Σ_{k<n} TransportMemory(n, k) σ_k
 };
 
 }  // namespace hullopt::sk

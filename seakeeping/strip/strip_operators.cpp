@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <limits>
-#include <map>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -12,6 +11,7 @@
 #include "seakeeping/green/memory_influence.h"
 #include "seakeeping/green/rankine_panel.h"
 #include "seakeeping/green/transient_green.h"
+#include "seakeeping/strip/contour_motion.h"
 
 namespace hullopt::sk {
 namespace {
@@ -25,10 +25,11 @@ inline double RealOfProduct(std::complex<double> a, std::complex<double> b) {
 }
 
 // Collocation points (panel mid-points, where the body condition holds) and the field quadrature of ∫φ n_z
-// dl.
+// dl; for the pressure form also the weights wt of the transport term's potential part (TransportWeights).
 struct FieldSet {
   std::vector<double> cy, cz, ny, nz;  // per panel
   std::vector<double> qy, qz, wnz;     // per quadrature point: position and weight · n_z [m]
+  std::vector<double> wt;              // per quadrature point [m/s], or empty
 };
 
 FieldSet MakeFieldSet(const std::vector<Panel>& panels, int points_per_panel) {
@@ -49,10 +50,11 @@ FieldSet MakeFieldSet(const std::vector<Panel>& panels, int points_per_panel) {
 }
 
 // Memory of the sources on `src` at lag levels s (each to be differenced over an interval):
-// nv(i, j) = (1/2π) ∫_panel ∂H⁽⁻¹⁾/∂n_i ds (real part taken), pl(j) = −(ρ/2π) Σ_q wnz_q ∫_panel Re H⁽⁻¹⁾ ds.
+// nv(i, j) = (1/2π) ∫_panel ∂H⁽⁻¹⁾/∂n_i ds (real part taken), pl(j) = −(ρ/2π) Σ_q wnz_q ∫_panel Re H⁽⁻¹⁾ ds,
+// pt(j) the same sum with the weights wt (empty when the field set has none).
 struct Level {
   Eigen::MatrixXd nv;
-  Eigen::RowVectorXd pl;
+  Eigen::RowVectorXd pl, pt;
 };
 
 // The source panels as the kernel sees them: distinct end points (adjacent panels of one contour share
@@ -107,7 +109,9 @@ void ComputeLevelsInto(const FieldSet& f, const SourceEnds& e, const std::vector
   const int nq = static_cast<int>(f.qy.size());
   const int nl = static_cast<int>(lags.size());
   if (nl < 1 || nl > 2) throw std::logic_error("ComputeLevels: one or two lags");
-  for (int l = 0; l < nl; ++l) out[l].nv.setZero(velocity ? nf : 0, ns), out[l].pl.setZero(ns);
+  const bool transport = !f.wt.empty();
+  for (int l = 0; l < nl; ++l)
+    out[l].nv.setZero(velocity ? nf : 0, ns), out[l].pl.setZero(ns), out[l].pt.setZero(transport ? ns : 0);
   if (ns == 0) return;
   const int ne = static_cast<int>(e.y.size());
   double log_lag[2] = {0.0, 0.0};
@@ -163,10 +167,13 @@ void ComputeLevelsInto(const FieldSet& f, const SourceEnds& e, const std::vector
   for (int p = 0; p < nq; ++p) {
     const std::complex<double>* hp = &h[static_cast<std::size_t>(p) * ne * nl];
     for (int j = 0; j < ns; ++j)
-      for (int l = 0; l < nl; ++l)
-        out[l].pl(j) += f.wnz[p] * RealOfProduct(e.i_e_minus_ialpha[j], hp[e.second[j] * nl + l] - hp[e.first[j] * nl + l]);
+      for (int l = 0; l < nl; ++l) {
+        const double v = RealOfProduct(e.i_e_minus_ialpha[j], hp[e.second[j] * nl + l] - hp[e.first[j] * nl + l]);
+        out[l].pl(j) += f.wnz[p] * v;
+        if (transport) out[l].pt(j) += f.wt[p] * v;
+      }
   }
-  for (int l = 0; l < nl; ++l) out[l].pl *= -rho * kInv2Pi;
+  for (int l = 0; l < nl; ++l) out[l].pl *= -rho * kInv2Pi, out[l].pt *= -rho * kInv2Pi;
 }
 
 std::vector<Level> ComputeLevels(const FieldSet& f, const SourceEnds& e, const std::vector<double>& lags,
@@ -180,27 +187,32 @@ Level ComputeLevel(const FieldSet& f, const SourceEnds& e, double s, double g, d
   return std::move(ComputeLevels(f, e, {s}, g, rho, velocity)[0]);
 }
 
-// A lag that is a whole number of half steps, as that number (the key of shared levels).
-int HalfSteps(double lag, double dt) { return static_cast<int>(std::lround(2.0 * lag / dt)); }
 
 // Rankine normal velocities at the collocation points of f from the sources `src` (with the +1/2 self term
-// where a collocation point is a source panel's midpoint) and the Rankine part of the momentum row.
+// where a collocation point is a source panel's midpoint), the Rankine part of the momentum row and, when f
+// has transport weights and `tr` is given, of the transport row.
 void Rankine(const FieldSet& f, const std::vector<Panel>& src, double rho, Eigen::MatrixXd* A,
-             Eigen::RowVectorXd* mom) {
+             Eigen::RowVectorXd* mom, Eigen::RowVectorXd* tr = nullptr) {
   const int nf = static_cast<int>(f.cy.size()), ns = static_cast<int>(src.size());
   A->resize(nf, ns);
   mom->setZero(ns);
+  const bool transport = tr && !f.wt.empty();
+  if (tr) tr->setZero(transport ? ns : 0);
   for (int j = 0; j < ns; ++j) {
     for (int i = 0; i < nf; ++i) {
       const auto r = RankinePanelInfluence(src[j], f.cy[i], f.cz[i]);
       const auto m = ImagePanelInfluence(src[j], f.cy[i], f.cz[i]);
       (*A)(i, j) = f.ny[i] * (r.vy - m.vy) + f.nz[i] * (r.vz - m.vz);
     }
-    double sum = 0;
-    for (std::size_t q = 0; q < f.qy.size(); ++q)
-      sum += f.wnz[q] * (RankinePanelInfluence(src[j], f.qy[q], f.qz[q]).phi -
-                         ImagePanelInfluence(src[j], f.qy[q], f.qz[q]).phi);
+    double sum = 0, sum_t = 0;
+    for (std::size_t q = 0; q < f.qy.size(); ++q) {
+      const double phi = RankinePanelInfluence(src[j], f.qy[q], f.qz[q]).phi -
+                         ImagePanelInfluence(src[j], f.qy[q], f.qz[q]).phi;
+      sum += f.wnz[q] * phi;
+      if (transport) sum_t += f.wt[q] * phi;
+    }
     (*mom)(j) = rho * sum;
+    if (transport) (*tr)(j) = rho * sum_t;
   }
 }
 
@@ -315,6 +327,62 @@ Dense ReduceColumns(const Dense& full, const MirrorMap& m) {
 void ReduceLevelInto(const Level& full, const MirrorMap& m, Level* out) {
   ReduceColumnsInto(full.nv, m, &out->nv);
   ReduceColumnsInto(full.pl, m, &out->pl);
+  if (full.pt.size() == 0)
+    out->pt.resize(0);
+  else
+    ReduceColumnsInto(full.pt, m, &out->pt);
+}
+
+// The transport term of the pressure form at one step (contour_motion.h), T = ∫_S W_n ∂φ/∂z dl − Σ_wl φ ẏ_out,
+// split as ∂φ/∂z = n_z ∂φ/∂n + t_z ∂φ/∂s with t = (p2 − p1)/L along each panel: the part with ∂φ/∂n is the
+// body condition's V (returned per panel in *direct, ρ W_n n_z L, so that its contribution is direct·V), the
+// rest is a weighted sum of φ at field points, stored as f->wt (without ρ; the levels multiply by it). On each
+// panel ∫ ∂φ/∂s dl = φ(p2) − φ(p1) exactly: φ is taken at the panel's end points, which are added to the field
+// set (momentum weight 0; one point per shared vertex). An end on the free surface (z = 0, where the memory
+// kernel of a coinciding source end is singular) takes φ from the least-squares line through the panel's
+// quadrature points extrapolated to it, as does the waterline term; that needs at least two points per panel.
+// `full_of` maps the field set's panels to the step's panels (identity, or the mirror-reduced half); `twice`
+// marks reduced panels that stand for a mirror pair, whose weights count twice as the momentum's do.
+void TransportWeights(const std::vector<Panel>& panels, const ContourMotion& motion,
+                      const std::vector<int>& full_of, const std::vector<bool>& twice, int points_per_panel,
+                      double rho, FieldSet* f, Eigen::RowVectorXd* direct) {
+  const auto& rule = GaussLegendre01(points_per_panel);
+  double mean = 0.0, spread = 0.0, scale_m = 0.0;
+  for (int k = 0; k < points_per_panel; ++k) mean += rule.nodes[k] / points_per_panel;
+  for (int k = 0; k < points_per_panel; ++k) spread += (rule.nodes[k] - mean) * (rule.nodes[k] - mean);
+  for (const Panel& p : panels) scale_m = std::max({scale_m, std::fabs(p.y1), std::fabs(p.y2), std::fabs(p.z1), std::fabs(p.z2)});
+  const double surface_tol = 1e-9 * scale_m;
+  const int R = static_cast<int>(full_of.size());
+  f->wt.assign(f->qy.size(), 0.0);
+  direct->setZero(R);
+  // φ at the end u (0 or 1) of panel r from its quadrature points' least-squares line, weight c.
+  auto add_extrapolated = [&](int r, double u, double c) {
+    for (int k = 0; k < points_per_panel; ++k)
+      f->wt[r * points_per_panel + k] += c * (1.0 / points_per_panel + (u - mean) * (rule.nodes[k] - mean) / spread);
+  };
+  // φ at a vertex below the surface: a field point of its own, shared by the panels meeting there.
+  auto add_vertex = [&](double y, double z, double c) {
+    for (std::size_t q = static_cast<std::size_t>(R) * points_per_panel; q < f->qy.size(); ++q)
+      if (f->qy[q] == y && f->qz[q] == z) {
+        f->wt[q] += c;
+        return;
+      }
+    f->qy.push_back(y), f->qz.push_back(z), f->wnz.push_back(0.0), f->wt.push_back(c);
+  };
+  for (int r = 0; r < R; ++r) {
+    const int j = full_of[r];
+    const Panel& p = panels[j];
+    const double scale = twice[r] ? 2.0 : 1.0;
+    const double W = motion.normal_speed_m_s[j], tz = (p.z2 - p.z1) / p.Length();
+    (*direct)(r) = scale * rho * W * p.Normal()[1] * p.Length();
+    const double c = scale * W * tz;  // times φ(p2) − φ(p1)
+    if (c != 0.0) {
+      if (p.z2 < -surface_tol) add_vertex(p.y2, p.z2, c); else add_extrapolated(r, 1.0, c);
+      if (p.z1 < -surface_tol) add_vertex(p.y1, p.z1, -c); else add_extrapolated(r, 0.0, -c);
+    }
+    for (const WaterlinePoint& w : motion.waterline)
+      if (w.panel == j) add_extrapolated(r, w.at_end ? 1.0 : 0.0, -scale * w.speed_m_s);
+  }
 }
 
 void CheckPanels(const std::vector<Panel>& panels, int step) {
@@ -350,6 +418,9 @@ bool StripOperatorOptions::IsValid(std::string* error) const {
   };
   if (field_points_per_panel < 1 || field_points_per_panel > 16)
     return fail("field_points_per_panel must be in 1..16, got " + std::to_string(field_points_per_panel));
+  if (sectional_force == SectionalForce::kPressure && field_points_per_panel < 2)
+    return fail("the pressure form needs field_points_per_panel >= 2 (the potential's slope along each panel), got " +
+                std::to_string(field_points_per_panel));
   if (body_potential == BodyPotential::kGreenIdentity && sectional_force != SectionalForce::kMomentum)
     return fail("body potential from Green's identity applies to the momentum form of the sectional force only (the "
                 "pressure form evaluates earlier steps' source potentials on the current contour)");
@@ -396,10 +467,27 @@ const Eigen::RowVectorXd& StripOperators::MomentumMemory(int n, int k) const {
   return k == 0 ? momentum_memory_[1][n] : momentum_memory_[0][n - k];
 }
 
-const Eigen::RowVectorXd& StripOperators::PressureMomentum(int s, int n, int k) const {
-  if (force_ != SectionalForce::kPressure || s < 1 || s > 2 || n < 0 || n >= steps_ || k < 0 || k > n - s)
-    throw std::out_of_range("PressureMomentum: needs operators built for the pressure form, s in 1..2, 0 <= k <= n - s");
-  return pressure_momentum_[s - 1][n][k];
+namespace {
+void RequirePressure(SectionalForce force, int n, int k, int steps) {
+  if (force != SectionalForce::kPressure || n < 0 || n >= steps || k < 0 || k > n)
+    throw std::out_of_range("transport rows: need general operators built for the pressure form, 0 <= k <= n < steps");
+}
+}  // namespace
+
+const Eigen::RowVectorXd& StripOperators::TransportCurrent(int n) const {
+  RequirePressure(invariant_ ? SectionalForce::kMomentum : force_, n, n, steps_);
+  return transport_current_[n];
+}
+
+const Eigen::RowVectorXd& StripOperators::TransportMemory(int n, int k) const {
+  RequirePressure(invariant_ ? SectionalForce::kMomentum : force_, n, k, steps_);
+  if (k == n) throw std::out_of_range("TransportMemory: k < n");
+  return transport_memory_[n][k];
+}
+
+const Eigen::RowVectorXd& StripOperators::TransportDirect(int n) const {
+  RequirePressure(invariant_ ? SectionalForce::kMomentum : force_, n, n, steps_);
+  return transport_direct_[n];
 }
 
 const Eigen::MatrixXd& StripOperators::LagMemory(int l) const {
@@ -415,9 +503,15 @@ const Eigen::RowVectorXd& StripOperators::LagMomentum(int l) const {
 }
 
 StripOperators BuildStripOperators(const std::vector<std::vector<Panel>>& panels_per_step, double dt,
-                                   double rho, double g, const StripOperatorOptions& options) {
+                                   double rho, double g, const StripOperatorOptions& options,
+                                   const std::vector<ContourMotion>* motions) {
   CheckScalars(dt, rho, g, options);
   const int N = static_cast<int>(panels_per_step.size());
+  if (motions) {
+    bool fits = static_cast<int>(motions->size()) == N;
+    for (int n = 0; fits && n < N; ++n) fits = (*motions)[n].normal_speed_m_s.size() == panels_per_step[n].size();
+    if (!fits) throw std::invalid_argument("strip operators: the contour motions do not match the steps' panels");
+  }
   for (int n = 0; n < N; ++n) CheckPanels(panels_per_step[n], n);
   StripOperators ops;
   ops.steps_ = N, ops.dt_ = dt, ops.rho_ = rho, ops.g_ = g, ops.invariant_ = false;
@@ -452,7 +546,7 @@ StripOperators BuildStripOperators(const std::vector<std::vector<Panel>>& panels
   ops.memory_.resize(N);
   ops.momentum_memory_.resize(N);
   const bool pressure = ops.force_ == SectionalForce::kPressure;
-  if (pressure) ops.pressure_momentum_[0].resize(N), ops.pressure_momentum_[1].resize(N);
+  if (pressure) ops.transport_current_.resize(N), ops.transport_memory_.resize(N), ops.transport_direct_.resize(N);
   std::vector<SourceEnds> ends(N);  // the source panels of each step as the kernel sees them, once
   for (int n = 0; n < N; ++n) ends[n] = MakeSourceEnds(panels_per_step[n]);
   // Each n is independent and computed by one thread in a fixed order: bitwise identical for any thread
@@ -460,34 +554,34 @@ StripOperators BuildStripOperators(const std::vector<std::vector<Panel>>& panels
 #pragma omp parallel for schedule(dynamic, 1)
   for (int n = N - 1; n >= 0; --n) {  // largest work first
     FieldSet f = MakeFieldSet(ops.panels_[n], options.field_points_per_panel);
+    std::vector<bool> twice(ops.panels_[n].size(), false);
+    std::vector<int> full_of(ops.panels_[n].size());
+    for (std::size_t r = 0; r < full_of.size(); ++r) full_of[r] = static_cast<int>(r);
     if (ops.reduced_) {
       // The momentum integrand is symmetric: the points of a mirror pair's half count twice.
       const int pp = options.field_points_per_panel;
-      for (std::size_t r = 0; r < maps[n].half.size(); ++r)
-        if (maps[n].partner[r] != maps[n].half[r])
+      for (std::size_t r = 0; r < maps[n].half.size(); ++r) {
+        full_of[r] = maps[n].half[r];
+        twice[r] = maps[n].partner[r] != maps[n].half[r];
+        if (twice[r])
           for (int q = 0; q < pp; ++q) f.wnz[r * pp + q] *= 2.0;
+      }
     }
-    auto reduce = [&](Level&& l, int k) {
-      if (ops.reduced_) l.nv = ReduceColumns(l.nv, maps[k]), l.pl = ReduceColumns(l.pl, maps[k]);
-      return std::move(l);
-    };
+    if (pressure && !panels_per_step[n].empty())
+      TransportWeights(panels_per_step[n], motions ? (*motions)[n] : StepContourMotion(panels_per_step, n, dt), full_of, twice,
+                       options.field_points_per_panel, rho, &f, &ops.transport_direct_[n]);
     Eigen::MatrixXd A;
-    Eigen::RowVectorXd mom;
-    Rankine(f, panels_per_step[n], rho, &A, &mom);
+    Eigen::RowVectorXd mom, tr;
+    Rankine(f, panels_per_step[n], rho, &A, &mom, pressure ? &tr : nullptr);
     if (options.body_potential == BodyPotential::kGreenIdentity && !panels_per_step[n].empty())
       mom = GreenIdentityRankineMomentum(panels_per_step[n], rho);
-    if (ops.reduced_) A = ReduceColumns(A, maps[n]), mom = ReduceColumns(mom, maps[n]);
+    if (ops.reduced_) {
+      A = ReduceColumns(A, maps[n]), mom = ReduceColumns(mom, maps[n]);
+      if (tr.size() > 0) tr = ReduceColumns(tr, maps[n]);
+    }
     ops.memory_[n].resize(n);
     ops.momentum_memory_[n].resize(n);
-    // Pressure form only: momentum rows of the levels by (source step, lag in half steps), shared between the
-    // momentum rows and the time-shifted rows below, whose lag intervals abut.
-    std::map<std::pair<int, int>, Eigen::RowVectorXd> momentum_level;
-    auto level_pl = [&](int k, double lag) -> const Eigen::RowVectorXd& {
-      auto it = momentum_level.find({k, HalfSteps(lag, dt)});
-      if (it != momentum_level.end()) return it->second;
-      return momentum_level[{k, HalfSteps(lag, dt)}] =
-                 reduce(ComputeLevel(f, ends[k], lag, g, rho, false), k).pl;
-    };
+    if (pressure) ops.transport_memory_[n].resize(n);
     for (int k = 0; k <= n; ++k) {
       // Lags of interval k seen at t_n: [max(0, t_k − dt/2), t_k + dt/2] (k < n), [t_n − dt/2, t_n] (k = n).
       double s1, s2;
@@ -505,36 +599,17 @@ StripOperators BuildStripOperators(const std::vector<std::vector<Panel>>& panels
       if (ops.reduced_) ReduceLevelInto(full[0], maps[k], &reduced[0]), ReduceLevelInto(full[1], maps[k], &reduced[1]);
       const Level& a = ops.reduced_ ? reduced[0] : full[0];
       const Level& b = ops.reduced_ ? reduced[1] : full[1];
-      if (pressure) momentum_level[{k, HalfSteps(s1, dt)}] = a.pl, momentum_level[{k, HalfSteps(s2, dt)}] = b.pl;
       if (k == n) {
         A -= b.nv - a.nv;
         mom += b.pl - a.pl;
+        if (tr.size() > 0) tr += b.pt - a.pt;
       } else {
         ops.memory_[n][k] = b.nv - a.nv;
         ops.momentum_memory_[n][k] = b.pl - a.pl;
+        if (pressure) ops.transport_memory_[n][k] = b.pt - a.pt;
       }
     }
-    // Pressure form: the momentum on THIS contour of the potential at t_p, p = n − s. Sources of step p are
-    // current there (Rankine part plus the memory of [t_p − dt/2, t_p]), earlier ones are memory.
-    for (int sh = 1; pressure && sh <= 2; ++sh) {
-      const int p = n - sh;
-      auto& rows = ops.pressure_momentum_[sh - 1][n];
-      rows.resize(std::max(p + 1, 0));
-      for (int k = 0; k <= p; ++k) {
-        Eigen::RowVectorXd row = Eigen::RowVectorXd::Zero(ops.reduced_ ? maps[k].half.size() : panels_per_step[k].size());
-        double s1 = 0.0, s2 = 0.5 * dt;
-        if (k == p) {
-          Eigen::MatrixXd unused;
-          Rankine(f, panels_per_step[p], rho, &unused, &row);
-          if (ops.reduced_) row = ReduceColumns(row, maps[p]);
-        } else {
-          s1 = (p - k - 0.5) * dt;
-          s2 = k == 0 ? p * dt : (p - k + 0.5) * dt;
-        }
-        if (!(k == p && p == 0)) row += level_pl(k, s2) - level_pl(k, s1);  // step 0 has no memory at t_0
-        rows[k] = row;
-      }
-    }
+    if (pressure) ops.transport_current_[n] = tr;
     ops.system_[n] = A;
     if (A.rows() > 0) ops.lu_[n].compute(A);
     ops.momentum_current_[n] = mom;

@@ -18,13 +18,14 @@
 // the strip's disturbance flow,
 //   I_n = ρ ∫_{S_n} φ n_z dl = MomentumCurrent(n) σ_n + Σ_{k<n} MomentumMemory(n, k) σ_k   [kg/s],
 // gives the sectional force f = dI/dt (n into the fluid), see strip_marcher.h and docs/theory.md. The
-// alternative pressure form (SectionalForce::kPressure) needs the momentum of the potential at EARLIER times
-// on the CURRENT contour, PressureMomentum(s, n, k).
+// alternative pressure form (SectionalForce::kPressure) subtracts the transport term of the moving contour,
+// TransportCurrent/TransportMemory/TransportDirect.
 #include <Eigen/Dense>
 #include <string>
 #include <vector>
 
 #include "seakeeping/green/panel.h"
+#include "seakeeping/strip/contour_motion.h"
 #include "seakeeping/strip/strip_kernel.h"
 
 namespace hullopt::sk {
@@ -35,9 +36,11 @@ enum class SectionalForce {
   /// f = dI/dt, I = ρ∫_{S(t)} φ n_z dl on the moving contour: the slender-body (STF-consistent) form, the
   /// default.
   kMomentum,
-  /// f = ρ∫_{S(t)} φ_t n_z dl with φ_t at FIXED points of the current contour (earlier potentials evaluated
-  /// there): the reference paper's written formula, f = −ρ∫ ∂φ/∂t n_z dl (its n into the body). Differs from
-  /// kMomentum only where the section changes along the hull; the kernel takes about 1.6–1.8 times as long.
+  /// f = ρ∫_{S(t)} φ_t n_z dl with φ_t at FIXED points of the current contour, taken on the fluid side: the
+  /// reference paper's written formula, f = −ρ∫ ∂φ/∂t n_z dl (its n into the body). Evaluated as dI/dt minus
+  /// the transport term ρ[∫ W_n ∂φ/∂z dl − Σ_wl φ ẏ_out] of the moving contour (contour_motion.h), so that
+  /// only exterior values of φ enter (earlier potentials evaluated at points an earlier contour enclosed would
+  /// be the source layer's interior potential). Differs from kMomentum only where the section changes.
   kPressure,
 };
 
@@ -112,9 +115,13 @@ class StripOperators {
   const Eigen::RowVectorXd& MomentumMemory(int n, int k) const;
   /// The sectional force form the operators were built for (kMomentum for a fixed section, where both agree).
   SectionalForce Force() const { return force_; }
-  /// kPressure only: ρ∫_{S_n} φ(·, t_{n−s}) n_z dl, the momentum on the contour of step n of the potential at
-  /// the earlier time t_{n−s} (s = 1, 2), per unit σ of step k <= n − s [kg/m] (1 × P_k).
-  const Eigen::RowVectorXd& PressureMomentum(int s, int n, int k) const;
+  /// kPressure only (general operators): the transport term ρT_n of step n (contour_motion.h), by which the
+  /// fixed-point pressure integral differs from dI/dt: f_pressure = f_momentum − ρT_n with
+  ///   ρT_n = TransportCurrent(n)·σ_n + Σ_{k<n} TransportMemory(n, k)·σ_k + TransportDirect(n)·V_n
+  /// [N/m]; the first two per unit σ [kg/s² per m/s], the last per unit normal velocity of step n's panels.
+  const Eigen::RowVectorXd& TransportCurrent(int n) const;
+  const Eigen::RowVectorXd& TransportMemory(int n, int k) const;
+  const Eigen::RowVectorXd& TransportDirect(int n) const;
 
   /// Time-invariant operators only: memory over a FULL interval centred at lag l·dt (l >= 1), the
   /// steady-state form used for frequency responses. Valid for 1 <= l < Steps().
@@ -123,7 +130,7 @@ class StripOperators {
 
  private:
   friend StripOperators BuildStripOperators(const std::vector<std::vector<Panel>>&, double, double, double,
-                                            const StripOperatorOptions&);
+                                            const StripOperatorOptions&, const std::vector<ContourMotion>*);
   friend StripOperators BuildFixedSectionOperators(const std::vector<Panel>&, int, double, double, double,
                                                    const StripOperatorOptions&, bool);
   int steps_ = 0;
@@ -145,16 +152,20 @@ class StripOperators {
   std::vector<std::vector<Eigen::MatrixXd>> memory_;
   std::vector<std::vector<Eigen::RowVectorXd>> momentum_memory_;
   SectionalForce force_ = SectionalForce::kMomentum;
-  // kPressure: pressure_momentum_[s − 1][n][k], k = 0..n − s.
-  std::vector<std::vector<Eigen::RowVectorXd>> pressure_momentum_[2];
+  // kPressure (general operators): transport rows by n, and [n][k] for k < n.
+  std::vector<Eigen::RowVectorXd> transport_current_, transport_direct_;
+  std::vector<std::vector<Eigen::RowVectorXd>> transport_memory_;
 };
 
 /// Operators for a sequence of panel sets (one per step; a step may hold several bodies, and may be empty),
 /// time step dt [s], water density rho [kg/m³], gravity g [m/s²]. Cost O(N² P² ·quadrature); OpenMP-parallel
 /// over n, bitwise identical results for any thread count. Throws std::invalid_argument on bad input (panel
-/// above z = 0, zero-length panel, dt/rho/g not positive, invalid options).
+/// above z = 0, zero-length panel, dt/rho/g not positive, invalid options). The pressure form's transport
+/// term takes the contour's motion from `motions` (one per step, for all its panels) when given, else from the
+/// panels of the neighbouring steps (StepContourMotion).
 StripOperators BuildStripOperators(const std::vector<std::vector<Panel>>& panels_per_step, double dt,
-                                   double rho, double g, const StripOperatorOptions& options = {});
+                                   double rho, double g, const StripOperatorOptions& options = {},
+                                   const std::vector<ContourMotion>* motions = nullptr);
 
 /// Operators of a section that does not change, for `steps` steps (memory by lag only; cost O(N P²) kernel
 /// quadratures). steady_state_only: skip the memory of the first half interval seen at later steps (half the
