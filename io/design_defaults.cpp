@@ -33,7 +33,11 @@ void FillDesignDefaults(YamlMap& root, std::vector<std::string>* notes) {
   YAML::Node raw = root.raw();
   if (!root.Has("seas")) {
     raw["seas"] = DefaultSeas();
-    if (notes) notes->push_back("seas: the sea-state line Hs 0.5..3.0 m, Tz = 4.5 s + 1.0 s/m Hs, JONSWAP gamma 3.3 (default)");
+    if (notes)
+      notes->push_back(
+          "seas: the sea-state line Hs 0.5..3.0 m, Tz = 4.5 s + 1.0 s/m Hs, JONSWAP gamma 3.3 (default, the "
+          "reference paper's): accelerations, MSI and the verdict hold for these head seas only; give the route's "
+          "seas (seas:) for its verdict");
   }
   const bool has_solver = root.Has("solver");
   if (has_solver && raw["solver"].IsMap() && raw["solver"]["frequencies"]) return;
@@ -63,7 +67,7 @@ void FillDesignDefaults(YamlMap& root, std::vector<std::string>* notes) {
     std::ostringstream s;
     s << "solver.frequencies: " << grid.values.size() << " wave frequencies, omega " << grid.values.front() << " to "
       << grid.values.back() << " rad/s (default grid of L " << d.hydrostatics.L_m << " m and U " << d.speed_m_s
-      << " m/s)";
+      << " m/s): the RAOs are computed at these frequencies; a peak the grid under-samples is a warning";
     notes->push_back(s.str());
   }
 }

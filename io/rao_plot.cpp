@@ -47,6 +47,25 @@ double ShownOmegaEMax(const std::vector<sk::RaoTable>& curves) {
   return we_max;
 }
 
+// The lowest ω (longest wave) below which heave and pitch of every curve stay within kShownRaoFraction of their
+// peaks of the long-wave limit |RAO| = 1 (the ship follows the wave), one table step further, for the λ/L axis.
+double ShownOmegaMin(const std::vector<sk::RaoTable>& curves) {
+  double w_min = std::numeric_limits<double>::infinity();
+  for (const auto& t : curves) {
+    for (const auto* v : {&t.heave, &t.pitch}) {
+      double peak = 0.0;
+      for (const auto& c : *v) peak = std::max(peak, std::abs(c));
+      // Nothing away from the limit: no cap (the table's lowest ω).
+      std::size_t first = 0;
+      for (std::size_t i = v->size(); i-- > 0;)
+        if (std::fabs(std::abs((*v)[i]) - 1.0) >= kShownRaoFraction * peak) first = i;
+      first = first > 0 ? first - 1 : 0;
+      w_min = std::min(w_min, t.omega_rad_s[first]);
+    }
+  }
+  return w_min;
+}
+
 }  // namespace
 
 PlotFigure RaoFigure(const std::vector<sk::RaoTable>& curves, const std::vector<std::string>& labels,
@@ -58,15 +77,24 @@ PlotFigure RaoFigure(const std::vector<sk::RaoTable>& curves, const std::vector<
   fig.footnote =
       "Head seas. Heave |x3|/A, pitch |x5|/(kA), k = ω²/g; pitch positive bow-down.\n"
       "Phases relative to the wave crest at the CG, lead positive, unwrapped along frequency.\n"
-      "Frequencies shown up to where the RAOs fall below 1 % of their peaks.";
+      "ω_e shown up to where the RAOs fall below 1 % of their peaks; λ/L up to where they are within 1 % of "
+      "their peaks of the long-wave limit 1.";
   const char* dof_name[2] = {"Heave", "Pitch"};
   const char* amp_label[2] = {kHeaveRaoLabel, kPitchRaoLabel};
   double we_max = curves.empty() ? 0.0 : ShownOmegaEMax(curves);
   if (measured)
     for (double w : measured->omega_e_rad_s)
       if (std::isfinite(w)) we_max = std::max(we_max, w);
-  // λ/L at the highest ω shown (of the first curve's table): the λ/L axis starts there.
-  double lambda_min = std::numeric_limits<double>::quiet_NaN();
+  // λ/L at the highest ω shown (of the first curve's table): the λ/L axis starts there; it ends where the RAOs
+  // have settled on the long-wave limit.
+  double lambda_min = std::numeric_limits<double>::quiet_NaN(), lambda_max = lambda_min;
+  if (!curves.empty() && !curves[0].omega_rad_s.empty()) {
+    const double w = ShownOmegaMin(curves);
+    lambda_max = 2 * M_PI * curves[0].g_m_s2 / (w * w) / length_m;
+    if (measured)
+      for (double l : measured->lambda_over_L)
+        if (std::isfinite(l)) lambda_max = std::max(lambda_max, l);
+  }
   if (!curves.empty() && !curves[0].omega_rad_s.empty()) {
     const auto& t = curves[0];
     double w_max = t.omega_rad_s.back();
@@ -77,6 +105,7 @@ PlotFigure RaoFigure(const std::vector<sk::RaoTable>& curves, const std::vector<
       for (double l : measured->lambda_over_L)
         if (std::isfinite(l)) lambda_min = std::min(lambda_min, l);
   }
+  if (!(lambda_max > lambda_min)) lambda_max = std::numeric_limits<double>::quiet_NaN();
   // Unwrapped phases of every curve, and the first curve's for placing measured phases on the same branch.
   std::vector<std::vector<double>> heave_phase, pitch_phase;
   for (const auto& t : curves) {
@@ -94,6 +123,7 @@ PlotFigure RaoFigure(const std::vector<sk::RaoTable>& curves, const std::vector<
         if (dof != 0 || phase) p.legend = LegendPlace::kNone;
         if (axis == 0 && we_max > 0.0) p.x_max = we_max;
         if (axis == 1 && std::isfinite(lambda_min)) p.x_min = lambda_min;
+        if (axis == 1 && std::isfinite(lambda_max)) p.x_max = lambda_max;
         for (std::size_t c = 0; c < curves.size(); ++c) {
           const auto& t = curves[c];
           const auto& ph = dof == 0 ? heave_phase[c] : pitch_phase[c];
@@ -103,6 +133,7 @@ PlotFigure RaoFigure(const std::vector<sk::RaoTable>& curves, const std::vector<
             if (axis == 0 && we_max > 0.0 && t.omega_e_rad_s[i] > we_max) continue;
             const double lambda = 2 * M_PI * t.g_m_s2 / (w * w) / length_m;
             if (axis == 1 && std::isfinite(lambda_min) && lambda < lambda_min * (1 - 1e-12)) continue;
+            if (axis == 1 && std::isfinite(lambda_max) && lambda > lambda_max * (1 + 1e-12)) continue;
             x.push_back(axis == 0 ? t.omega_e_rad_s[i] : lambda);
             const auto v = dof == 0 ? t.heave[i] : t.pitch[i];
             y.push_back(phase ? ph[i] : std::abs(v));
