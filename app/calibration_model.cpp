@@ -4,8 +4,8 @@
 
 #include "app/run_checks.h"
 #include "evaluation/calibration_model.h"
-#include "io/design_config.h"
-#include "io/input_error.h"
+#include "io/config/design_config.h"
+#include "io/formats/input_error.h"
 #include "optimizer/synthetic_oscillator_rao.h"
 
 namespace hullopt::app {

@@ -3,8 +3,8 @@
 // fit.
 #include <vector>
 
-#include "io/calibrate_config.h"
-#include "io/yaml_map.h"
+#include "io/config/calibrate_config.h"
+#include "io/config/yaml_map.h"
 #include "optimizer/cs_calibration.h"
 
 namespace hullopt::app {

@@ -8,10 +8,10 @@
 
 #include "app/mpi_context.h"
 #include "app/output_dir.h"
-#include "io/atomic_file.h"
-#include "io/campaign_outputs.h"
-#include "io/input_error.h"
-#include "io/yaml_difference.h"
+#include "io/formats/atomic_file.h"
+#include "io/config/campaign_outputs.h"
+#include "io/formats/input_error.h"
+#include "io/config/yaml_difference.h"
 
 namespace hullopt::app {
 

@@ -10,7 +10,7 @@
 #include <utility>
 #include <vector>
 
-#include "io/history_csv.h"
+#include "io/formats/history_csv.h"
 #include "optimizer/campaign.h"
 #include "optimizer/constraint_set.h"
 #include "optimizer/evaluation_record.h"

@@ -7,13 +7,13 @@
 #include "app/output_dir.h"
 #include "app/single_design.h"
 #include "evaluation/seakeeping_criteria.h"
-#include "io/bodyplan_svg.h"
-#include "io/criteria_csv.h"
-#include "io/evaluation_report.h"
-#include "io/html_report.h"
-#include "io/rao_plot.h"
-#include "io/verdict_report.h"
-#include "io/yaml_map.h"
+#include "io/report/bodyplan_svg.h"
+#include "io/formats/criteria_csv.h"
+#include "io/report/evaluation_report.h"
+#include "io/report/html_report.h"
+#include "io/report/rao_plot.h"
+#include "io/report/verdict_report.h"
+#include "io/config/yaml_map.h"
 
 namespace hullopt::app {
 namespace {

@@ -2,7 +2,7 @@
 // report.html of a campaign folder (optimize, explore): the baseline (the campaign config's own design) beside
 // the best design (best.yaml) — hydrostatics, body plans, RAOs, MSI per sea and position — and the campaign's
 // convergence and variable plots. Both designs are evaluated once here, with the design defaults of
-// io/design_defaults.h for what the campaign config does not give.
+// io/config/design_defaults.h for what the campaign config does not give.
 #include <string>
 #include <vector>
 

@@ -14,7 +14,7 @@
 #include "app/output_dir.h"
 #include "app/run_checks.h"
 #include "hullopt/version.h"
-#include "io/campaign_outputs.h"
+#include "io/config/campaign_outputs.h"
 
 namespace hullopt::app {
 

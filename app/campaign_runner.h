@@ -20,8 +20,8 @@
 #include "app/campaign_setup.h"
 #include "app/commands.h"
 #include "app/progress.h"
-#include "io/campaign_config.h"
-#include "io/input_error.h"
+#include "io/config/campaign_config.h"
+#include "io/formats/input_error.h"
 #include "optimizer/constraint_set.h"
 #include "optimizer/evaluation_record.h"
 

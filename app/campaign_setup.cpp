@@ -8,9 +8,9 @@
 #include <optional>
 
 #include "app/evaluator_factory.h"
-#include "io/campaign_outputs.h"
-#include "io/evaluation_report.h"
-#include "io/input_error.h"
+#include "io/config/campaign_outputs.h"
+#include "io/report/evaluation_report.h"
+#include "io/formats/input_error.h"
 #include "evaluation/msi_evaluator.h"
 
 namespace hullopt::app {

@@ -8,8 +8,8 @@
 #include <string>
 #include <vector>
 
-#include "io/campaign_config.h"
-#include "io/resolution_check_config.h"
+#include "io/config/campaign_config.h"
+#include "io/config/resolution_check_config.h"
 #include "optimizer/evaluation_record.h"
 #include "optimizer/evaluator.h"
 

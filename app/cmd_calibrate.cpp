@@ -10,12 +10,12 @@
 #include "app/calibration_model.h"
 #include "app/commands.h"
 #include "app/output_dir.h"
-#include "io/atomic_file.h"
-#include "io/calibrate_config.h"
-#include "io/calibration_output.h"
-#include "io/calibration_plot.h"
-#include "io/input_error.h"
-#include "io/tank_rao_reader.h"
+#include "io/formats/atomic_file.h"
+#include "io/config/calibrate_config.h"
+#include "io/config/calibration_output.h"
+#include "io/report/calibration_plot.h"
+#include "io/formats/input_error.h"
+#include "io/formats/tank_rao_reader.h"
 
 namespace hullopt::app {
 namespace {

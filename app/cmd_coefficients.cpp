@@ -7,15 +7,15 @@
 #include <sstream>
 
 #include "app/commands.h"
-#include "io/design_config.h"
+#include "io/config/design_config.h"
 #include "app/output_dir.h"
 #include "app/run_checks.h"
-#include "io/coefficients_csv_writer.h"
-#include "io/coefficients_plot.h"
-#include "io/config_path.h"
-#include "io/input_error.h"
-#include "io/measured_coefficients_csv.h"
-#include "io/yaml_map.h"
+#include "io/formats/coefficients_csv_writer.h"
+#include "io/report/coefficients_plot.h"
+#include "io/config/config_path.h"
+#include "io/formats/input_error.h"
+#include "io/formats/measured_coefficients_csv.h"
+#include "io/config/yaml_map.h"
 
 namespace hullopt::app {
 namespace {
@@ -25,7 +25,7 @@ void RunCoefficients(const std::string& config_file, const std::string& out_dir)
   const std::string name = io::ParseDesignName(root, std::filesystem::path(config_file).stem().string());
   eval::DesignCase d = io::LoadDesignCase(root, config_file, name);
   if (!d.has_frequencies) root.Map("solver").Fail("frequencies", "required: the frequencies of the coefficients");
-  // compare: measured points to draw over the computed curves (io/measured_coefficients_csv.h).
+  // compare: measured points to draw over the computed curves (io/formats/measured_coefficients_csv.h).
   std::vector<io::MeasuredCoefficientRow> heave, pitch;
   std::vector<io::MeasuredWaveLoadRow> loads;
   std::string trim = "zero";

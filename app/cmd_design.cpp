@@ -1,5 +1,5 @@
 // hullopt design CONFIG --out DIR: one hull (parametric, offsets or STL) through hydrostatics, RAOs,
-// accelerations and MSI with the defaults of io/design_defaults.h, and report.html.
+// accelerations and MSI with the defaults of io/config/design_defaults.h, and report.html.
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -11,17 +11,17 @@
 #include "app/output_dir.h"
 #include "app/run_checks.h"
 #include "evaluation/seakeeping_criteria.h"
-#include "io/criteria_csv.h"
-#include "io/design_config.h"
-#include "io/bodyplan_svg.h"
-#include "io/evaluation_report.h"
-#include "io/html_report.h"
-#include "io/hydrostatics_json.h"
-#include "io/input_error.h"
-#include "io/rao_csv_writer.h"
-#include "io/rao_plot.h"
-#include "io/verdict_report.h"
-#include "io/yaml_map.h"
+#include "io/formats/criteria_csv.h"
+#include "io/config/design_config.h"
+#include "io/report/bodyplan_svg.h"
+#include "io/report/evaluation_report.h"
+#include "io/report/html_report.h"
+#include "io/formats/hydrostatics_json.h"
+#include "io/formats/input_error.h"
+#include "io/formats/rao_csv_writer.h"
+#include "io/report/rao_plot.h"
+#include "io/report/verdict_report.h"
+#include "io/config/yaml_map.h"
 
 namespace hullopt::app {
 namespace {

@@ -10,7 +10,7 @@
 //   designs:                                 # ... or several, each a design config file
 //     - { config: davis-holloway-2003/hull04_DUT372.yaml, name: DUT372, group: catamaran, Cs: 0.024 }
 //
-// Paths are relative to the folder of the config that names them (io/config_path.h).
+// Paths are relative to the folder of the config that names them (io/config/config_path.h).
 //
 //   rao_csv: out/rao/rao.csv                 # one design ...
 //   name: delft372                           # optional, default: the file's parent folder or stem
@@ -22,7 +22,7 @@
 //
 //   speed: { kn: 40 }                        # optional check of the speed implied by the RAO files
 //   water: { g_m_s2: 9.81 }                  # optional
-//   seas: [...]; msi: {...}; positions: { points: [...] }   (io/seas_config.h)
+//   seas: [...]; msi: {...}; positions: { points: [...] }   (io/config/seas_config.h)
 //   report: { plots: true }
 #include <chrono>
 #include <cmath>
@@ -36,24 +36,24 @@
 
 #include "app/commands.h"
 #include "app/design_resolution_check.h"
-#include "io/design_defaults.h"
-#include "io/design_config.h"
+#include "io/config/design_defaults.h"
+#include "io/config/design_config.h"
 #include "app/output_dir.h"
 #include "app/run_checks.h"
-#include "io/config_path.h"
+#include "io/config/config_path.h"
 #include "evaluation/seakeeping_criteria.h"
-#include "io/criteria_csv.h"
-#include "io/evaluation_report.h"
-#include "io/html_report.h"
-#include "io/verdict_report.h"
-#include "io/input_error.h"
-#include "io/rao_table_csv.h"
-#include "io/resolution_check_config.h"
+#include "io/formats/criteria_csv.h"
+#include "io/report/evaluation_report.h"
+#include "io/report/html_report.h"
+#include "io/report/verdict_report.h"
+#include "io/formats/input_error.h"
+#include "io/formats/rao_table_csv.h"
+#include "io/config/resolution_check_config.h"
 #include "evaluation/design_resolution_check.h"
-#include "io/seas_config.h"
-#include "io/operability_config.h"
-#include "io/operability_output.h"
-#include "io/yaml_map.h"
+#include "io/config/seas_config.h"
+#include "io/config/operability_config.h"
+#include "io/formats/operability_output.h"
+#include "io/config/yaml_map.h"
 #include "seakeeping/motions/rao_checks.h"
 #include "seas/design_evaluation.h"
 #include "seas/resolution_check.h"

@@ -10,7 +10,7 @@
 #include "app/commands.h"
 #include "app/output_dir.h"
 #include "app/pareto_sweep.h"
-#include "io/campaign_plots.h"
+#include "io/report/campaign_plots.h"
 #include "optimizer/nlopt_algorithms.h"
 #include "optimizer/nlopt_driver.h"
 

@@ -4,7 +4,7 @@
 
 #include "evaluation/design_resolution_check.h"
 
-#include "io/input_error.h"
+#include "io/formats/input_error.h"
 
 namespace hullopt::app {
 

@@ -6,8 +6,8 @@
 #include <vector>
 
 #include "evaluation/design_case.h"
-#include "io/evaluated_design.h"
-#include "io/resolution_check_config.h"
+#include "io/report/evaluated_design.h"
+#include "io/config/resolution_check_config.h"
 #include "seas/design_evaluation.h"
 
 namespace hullopt::app {

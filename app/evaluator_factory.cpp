@@ -1,7 +1,7 @@
 #include "app/evaluator_factory.h"
 
-#include "io/msi_objective_config.h"
-#include "io/input_error.h"
+#include "io/config/msi_objective_config.h"
+#include "io/formats/input_error.h"
 #include "optimizer/analytic_objectives.h"
 
 namespace hullopt::app {

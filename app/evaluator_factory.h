@@ -4,7 +4,7 @@
 // (root), and return an opt::Evaluator that builds the hull from the free variables, computes RAOs and MSI.
 #include <memory>
 
-#include "io/yaml_map.h"
+#include "io/config/yaml_map.h"
 #include "optimizer/campaign.h"
 #include "optimizer/evaluator.h"
 

@@ -7,7 +7,7 @@
 #include "app/commands.h"
 #include "app/mpi_context.h"
 #include "hullopt/version.h"
-#include "io/input_error.h"
+#include "io/formats/input_error.h"
 
 int main(int argc, char** argv) {
   hullopt::app::MpiInit(&argc, &argv);

@@ -8,10 +8,10 @@
 
 #include "app/mpi_context.h"
 #include "hullopt/version.h"
-#include "io/atomic_file.h"
-#include "io/input_error.h"
-#include "io/utf8_text.h"
-#include "io/yaml_difference.h"
+#include "io/formats/atomic_file.h"
+#include "io/formats/input_error.h"
+#include "io/formats/utf8_text.h"
+#include "io/config/yaml_difference.h"
 
 namespace hullopt::app {
 

@@ -5,7 +5,7 @@
 #include <memory>
 #include <string>
 
-#include "io/output_lock.h"
+#include "io/formats/output_lock.h"
 
 namespace hullopt::app {
 

@@ -11,11 +11,11 @@
 #include <nlohmann/json.hpp>
 #include <vector>
 
-#include "io/config_path.h"
-#include "io/history_csv.h"
-#include "io/input_error.h"
-#include "io/svg_plot.h"
-#include "io/yaml_map.h"
+#include "io/config/config_path.h"
+#include "io/formats/history_csv.h"
+#include "io/formats/input_error.h"
+#include "io/report/svg_plot.h"
+#include "io/config/yaml_map.h"
 
 namespace hullopt::app {
 namespace {

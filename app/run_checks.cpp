@@ -3,7 +3,7 @@
 #include <cstdio>
 
 #include "app/mpi_context.h"
-#include "io/input_error.h"
+#include "io/formats/input_error.h"
 
 namespace hullopt::app {
 namespace {

@@ -2,11 +2,11 @@
 
 #include "app/design_resolution_check.h"
 #include "app/run_checks.h"
-#include "io/design_config.h"
-#include "io/design_defaults.h"
-#include "io/input_error.h"
-#include "io/run_cost.h"
-#include "io/seas_config.h"
+#include "io/config/design_config.h"
+#include "io/config/design_defaults.h"
+#include "io/formats/input_error.h"
+#include "io/config/run_cost.h"
+#include "io/config/seas_config.h"
 
 namespace hullopt::app {
 

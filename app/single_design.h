@@ -1,14 +1,14 @@
 #pragma once
-// One design read from a hull config with the defaults of io/design_defaults.h and evaluated in its seas:
-// what `hullopt design` writes and what a campaign's report sets beside each other (baseline and best).
+// One design read from a hull config with the defaults of io/config/design_defaults.h and evaluated in its
+// seas: what `hullopt design` writes and what a campaign's report sets beside each other (baseline and best).
 #include <functional>
 #include <string>
 #include <vector>
 
 #include "evaluation/design_case.h"
-#include "io/evaluated_design.h"
-#include "io/resolution_check_config.h"
-#include "io/yaml_map.h"
+#include "io/report/evaluated_design.h"
+#include "io/config/resolution_check_config.h"
+#include "io/config/yaml_map.h"
 #include "seas/design_evaluation.h"
 
 namespace hullopt::app {

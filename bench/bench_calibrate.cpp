@@ -7,7 +7,7 @@
 #include <chrono>
 #include <thread>
 
-#include "io/tank_rao_reader.h"
+#include "io/formats/tank_rao_reader.h"
 #include "optimizer/cs_calibration.h"
 #include "optimizer/synthetic_oscillator_rao.h"
 

@@ -8,7 +8,7 @@
 #include <cstdio>
 #include <string>
 
-#include "io/history_csv.h"
+#include "io/formats/history_csv.h"
 #include "optimizer/analytic_objectives.h"
 #include "optimizer/design_sampling.h"
 #include "optimizer/nlopt_driver.h"

@@ -11,10 +11,10 @@
 #include <vector>
 
 #include "app/campaign_setup.h"
-#include "io/design_config.h"
-#include "io/motion_config.h"
+#include "io/config/design_config.h"
+#include "io/config/motion_config.h"
 #include "evaluation/trial_design.h"
-#include "io/seas_config.h"
+#include "io/config/seas_config.h"
 #include "parametric_hull/hull_generator.h"
 #include "resistance/calm_water_resistance.h"
 #include "seakeeping/motions/periodic_motion_solver.h"

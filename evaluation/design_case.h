@@ -1,7 +1,8 @@
 #pragma once
 // One design as the evaluations that need RAOs see it (evaluate, optimize, calibrate): the hull, its
 // hydrostatics and mass properties, the speed and the strip-solver settings, and the calls that turn it into
-// heave and pitch RAOs with the paper's time-domain strip method. io/design_config.h fills one from a config.
+// heave and pitch RAOs with the paper's time-domain strip method. io/config/design_config.h fills one from a
+// config.
 #include <map>
 #include <string>
 #include <vector>

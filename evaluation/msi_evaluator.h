@@ -2,7 +2,7 @@
 // The seakeeping objective of a campaign: free design variables → parametric hull at fixed displacement →
 // RAOs by the time-domain strip method → rms accelerations and MSI in the campaign's seas, and the calm-water
 // resistance at the design speed, or the design's operability over a wave scatter diagram (seas/operability.h).
-// io/msi_objective_config.h reads its options from a config.
+// io/config/msi_objective_config.h reads its options from a config.
 //
 // Quantities for constraints: L_m, B_m, T_m, B_overall_m, displacement_t, Cb, Cp, Cwp, Cvp, Fr, GM_T_m, GM_L_m,
 // and the calm-water resistance at the design speed R_T_kN, R_W_kN, P_E_kW.

@@ -1,7 +1,7 @@
 #pragma once
 // Seakeeping criteria and the verdict of a design against them: per sea state, each criterion's value at its
 // location, its limit, whether it holds and the margin. The criteria are data (data/criteria/*.csv, read by
-// io/criteria_csv.h); this is the computation. Head seas, linear: rms vertical accelerations and MSI from the
+// io/formats/criteria_csv.h); this is the computation. Head seas, linear: rms vertical accelerations and MSI from the
 // design evaluation, slamming and deck-wetness probabilities from the relative motion at the bow
 // (seas/relative_motion.h) with the draught and freeboard of the hull at the station (at rest, even keel).
 #include <string>

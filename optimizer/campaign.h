@@ -1,8 +1,8 @@
 #pragma once
 // What a campaign is asked to do, independent of any file format: the free design variables with bounds and
 // start values, the constraints on named quantities, the NLopt algorithm and stopping criteria, multistart
-// and the random seed. Filled by io/campaign_config from YAML; validated here so that every bad input is
-// refused before the first evaluation.
+// and the random seed. Filled by io/config/campaign_config from YAML; validated here so that every bad input
+// is refused before the first evaluation.
 #include <cstdint>
 #include <string>
 #include <vector>

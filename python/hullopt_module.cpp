@@ -16,14 +16,14 @@
 #include <vector>
 
 #include "app/commands.h"
-#include "io/design_config.h"
+#include "io/config/design_config.h"
 #include "hullopt/hullopt.h"
-#include "io/hull_config.h"
-#include "io/input_error.h"
-#include "io/motion_config.h"
-#include "io/seas_config.h"
-#include "io/water_config.h"
-#include "io/yaml_map.h"
+#include "io/config/hull_config.h"
+#include "io/formats/input_error.h"
+#include "io/config/motion_config.h"
+#include "io/config/seas_config.h"
+#include "io/config/water_config.h"
+#include "io/config/yaml_map.h"
 
 namespace py = pybind11;
 using namespace hullopt;

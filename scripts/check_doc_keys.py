@@ -7,7 +7,7 @@
     docs/commands/<command>.md or of the shared blocks that page names (docs/commands/common-blocks.md).
 (b) No documented key is rejected: every documented key of a command appears in some config.resolved.yaml of
     that command, or in READ_WHEN_PRESENT below (keys read only when given, which the runs here do not reach),
-    whose last component must be a string literal of the readers in io/ and app/.
+    whose last component must be a string literal of the readers in io/formats/, io/config/, io/report/ and app/.
 (c) No page refers to a file outside the repository, and every relative link of docs/ and README.md points to
     an existing file.
 
@@ -296,7 +296,7 @@ def run_commands(binary, tmp):
 def check_present_only():
     errors = 0
     sources = ""
-    for d in ("io", "app"):
+    for d in ("io/formats", "io/config", "io/report", "app"):
         for name in sorted(os.listdir(os.path.join(ROOT, d))):
             if name.endswith(".cpp"):
                 sources += open(os.path.join(ROOT, d, name), encoding="utf-8").read()

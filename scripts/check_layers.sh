@@ -3,7 +3,8 @@
 # (docs/developer-guide.md). Prints every edge that runs up a layer and exits 1 if there is one.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-layers=(parametric_hull resistance seakeeping/green seakeeping/sections seakeeping/strip seakeeping/motions seas optimizer evaluation io app)
+layers=(parametric_hull resistance seakeeping/green seakeeping/sections seakeeping/strip seakeeping/motions seas optimizer evaluation
+        io/formats io/config io/report app)
 rank_of() {  # rank of a path's layer, or -1 for paths outside the layered modules
   local p=$1 i best=-1 bestlen=0
   for i in "${!layers[@]}"; do

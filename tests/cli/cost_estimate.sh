@@ -1,9 +1,9 @@
 #!/usr/bin/env bash
-# The cost estimate before the strip-solver work (io/run_cost.h, docs/bad-inputs.md "Cost estimate"): every run
-# prints one estimate line on stderr; a config within the documented maxima whose estimate is beyond 8 GiB or
-# 1 h is refused at once (exit 1) naming the numbers and the key that drives it; --force runs it. The --force
-# case is a campaign whose max_evaluations bound is huge but which converges after a few dozen evaluations.
-# Usage: cost_estimate.sh HULLOPT
+# The cost estimate before the strip-solver work (io/config/run_cost.h, docs/bad-inputs.md "Cost estimate"):
+# every run prints one estimate line on stderr; a config within the documented maxima whose estimate is beyond
+# 8 GiB or 1 h is refused at once (exit 1) naming the numbers and the key that drives it; --force runs it. The
+# --force case is a campaign whose max_evaluations bound is huge but which converges after a few dozen
+# evaluations. Usage: cost_estimate.sh HULLOPT
 set -u
 BIN="$1"
 T=$(mktemp -d)

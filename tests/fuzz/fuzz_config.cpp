@@ -3,16 +3,16 @@
 #include <optional>
 
 #include "fuzz_input.h"
-#include "io/calibrate_config.h"
-#include "io/campaign_config.h"
-#include "io/hull_config.h"
-#include "io/input_error.h"
-#include "io/motion_config.h"
-#include "io/seas_config.h"
-#include "io/section_config.h"
-#include "io/speed_config.h"
-#include "io/water_config.h"
-#include "io/yaml_map.h"
+#include "io/config/calibrate_config.h"
+#include "io/config/campaign_config.h"
+#include "io/config/hull_config.h"
+#include "io/formats/input_error.h"
+#include "io/config/motion_config.h"
+#include "io/config/seas_config.h"
+#include "io/config/section_config.h"
+#include "io/config/speed_config.h"
+#include "io/config/water_config.h"
+#include "io/config/yaml_map.h"
 
 namespace {
 using hullopt::io::InputError;

@@ -1,8 +1,8 @@
 // libFuzzer harness: the offsets CSV reader, then the hydrostatics and plausibility checks of what it read.
 #include "fuzz_input.h"
 #include "evaluation/hull_plausibility.h"
-#include "io/input_error.h"
-#include "io/offsets_csv.h"
+#include "io/formats/input_error.h"
+#include "io/formats/offsets_csv.h"
 #include "parametric_hull/hydrostatics.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {

@@ -1,7 +1,7 @@
 // libFuzzer harness: the STL reader (ASCII and binary) and the slicer.
 #include "fuzz_input.h"
-#include "io/input_error.h"
-#include "io/stl_reader.h"
+#include "io/formats/input_error.h"
+#include "io/formats/stl_reader.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   namespace io = hullopt::io;

@@ -1,7 +1,7 @@
 // libFuzzer harness: the tank RAO CSV reader and the grouping by speed.
 #include "fuzz_input.h"
-#include "io/input_error.h"
-#include "io/tank_rao_reader.h"
+#include "io/formats/input_error.h"
+#include "io/formats/tank_rao_reader.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   namespace io = hullopt::io;

@@ -19,7 +19,7 @@ ROOT = os.environ.get("HULLOPT_SOURCE_DIR", os.getcwd())
 NPL5B = dict(type="catamaran", section_style="round_bilge", displacement_t=1000, L_over_B=11.0, B_over_T=2.0,
              Cb=0.40, Cp=0.69, Cwp=0.76, LCB_pct_L=-6.4, LCF_pct_L=-8.3, transom_immersion=0.3,
              transom_beam_ratio=0.6, keel_rise=0.3, spacing_over_L=0.25)
-SPEED_M_S = 40 * (1852.0 / 3600.0)  # 40 kn, as io/speed_config converts it
+SPEED_M_S = 40 * (1852.0 / 3600.0)  # 40 kn, as io/config/speed_config converts it
 OMEGA = [0.4, 0.6, 0.8, 1.0, 1.2, 1.5, 2.0]
 SOLVER = {"sections": 20, "panels": 8, "Cs": 0.065}
 

@@ -4,8 +4,8 @@
 #include <string>
 #include <vector>
 
-#include "io/rao_plot.h"
-#include "io/tank_rao_reader.h"
+#include "io/report/rao_plot.h"
+#include "io/formats/tank_rao_reader.h"
 
 namespace hullopt::testing {
 

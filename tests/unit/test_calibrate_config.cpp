@@ -5,7 +5,7 @@
 #include <filesystem>
 #include <fstream>
 
-#include "io/calibrate_config.h"
+#include "io/config/calibrate_config.h"
 
 using hullopt::io::ReadCalibrateConfig;
 using hullopt::io::YamlMap;

@@ -3,7 +3,7 @@
 // strictly.
 #include <catch2/catch.hpp>
 
-#include "io/campaign_config.h"
+#include "io/config/campaign_config.h"
 #include "optimizer/campaign.h"
 
 using hullopt::opt::CampaignDefinition;

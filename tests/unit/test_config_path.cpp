@@ -5,7 +5,7 @@
 #include <filesystem>
 #include <fstream>
 
-#include "io/config_path.h"
+#include "io/config/config_path.h"
 
 namespace fs = std::filesystem;
 using hullopt::io::ConfigFilePath;

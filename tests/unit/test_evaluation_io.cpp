@@ -8,10 +8,10 @@
 #include <fstream>
 #include <sstream>
 
-#include "io/evaluation_report.h"
-#include "io/input_error.h"
-#include "io/rao_table_csv.h"
-#include "io/seakeeping_plots.h"
+#include "io/report/evaluation_report.h"
+#include "io/formats/input_error.h"
+#include "io/formats/rao_table_csv.h"
+#include "io/report/seakeeping_plots.h"
 #include "seas/design_evaluation.h"
 #include "seakeeping/motions/encounter_frequency.h"
 

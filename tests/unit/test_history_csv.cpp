@@ -6,8 +6,8 @@
 #include <fstream>
 #include <sstream>
 
-#include "io/history_csv.h"
-#include "io/input_error.h"
+#include "io/formats/history_csv.h"
+#include "io/formats/input_error.h"
 
 using namespace hullopt;
 

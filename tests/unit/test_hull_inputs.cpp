@@ -4,9 +4,9 @@
 #include <fstream>
 #include <string>
 
-#include "io/hull_config.h"
-#include "io/speed_config.h"
-#include "io/water_config.h"
+#include "io/config/hull_config.h"
+#include "io/config/speed_config.h"
+#include "io/config/water_config.h"
 
 using namespace hullopt;
 

@@ -1,7 +1,7 @@
 // solver: and mass: config sections: defaults, frequency forms, and one-line errors naming key and rule.
 #include <catch2/catch.hpp>
 
-#include "io/motion_config.h"
+#include "io/config/motion_config.h"
 
 using hullopt::io::InputError;
 using hullopt::io::YamlMap;

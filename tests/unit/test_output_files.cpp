@@ -8,10 +8,10 @@
 #include <string>
 #include <unistd.h>
 
-#include "io/atomic_file.h"
-#include "io/input_error.h"
-#include "io/output_lock.h"
-#include "io/utf8_text.h"
+#include "io/formats/atomic_file.h"
+#include "io/formats/input_error.h"
+#include "io/formats/output_lock.h"
+#include "io/formats/utf8_text.h"
 
 using namespace hullopt;
 namespace fs = std::filesystem;

@@ -8,8 +8,8 @@
 #include <string>
 #include <vector>
 
-#include "io/finite_json.h"
-#include "io/input_error.h"
+#include "io/formats/finite_json.h"
+#include "io/formats/input_error.h"
 #include "seakeeping/motions/rao_checks.h"
 
 using namespace hullopt;

@@ -14,16 +14,16 @@
 #include <string>
 #include <vector>
 
-#include "io/campaign_plots.h"
-#include "io/bodyplan_svg.h"
-#include "io/design_variable_label.h"
-#include "io/input_error.h"
-#include "io/rao_axis_labels.h"
-#include "io/rao_comparison.h"
-#include "io/rao_plot.h"
-#include "io/seakeeping_plots.h"
-#include "io/svg_plot.h"
-#include "io/yaml_map.h"
+#include "io/report/campaign_plots.h"
+#include "io/report/bodyplan_svg.h"
+#include "io/report/design_variable_label.h"
+#include "io/formats/input_error.h"
+#include "io/report/rao_axis_labels.h"
+#include "io/report/rao_comparison.h"
+#include "io/report/rao_plot.h"
+#include "io/report/seakeeping_plots.h"
+#include "io/report/svg_plot.h"
+#include "io/config/yaml_map.h"
 #include "parametric_hull/hull_generator.h"
 
 namespace io = hullopt::io;

@@ -4,7 +4,7 @@
 #include <limits>
 #include <sstream>
 
-#include "io/rao_csv_writer.h"
+#include "io/formats/rao_csv_writer.h"
 
 TEST_CASE("rao.csv columns and values", "[rao_csv]") {
   hullopt::sk::RaoTable t;

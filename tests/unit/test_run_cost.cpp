@@ -1,8 +1,9 @@
-// The run-cost estimate (io/run_cost.h) against measured runs, its scaling against the kernel's operation
-// counts, and the refusals beyond the documented thresholds (8 GiB, 1 h) naming the key that drives them.
+// The run-cost estimate (io/config/run_cost.h) against measured runs, its scaling against the kernel's
+// operation counts, and the refusals beyond the documented thresholds (8 GiB, 1 h) naming the key that drives
+// them.
 #include <catch2/catch.hpp>
 
-#include "io/run_cost.h"
+#include "io/config/run_cost.h"
 
 using hullopt::io::EstimateRunCost;
 using hullopt::io::RunCostRefusal;

@@ -1,4 +1,4 @@
-// Seakeeping criteria as data (io/criteria_csv.h) and the verdict (evaluation/seakeeping_criteria.h): the
+// Seakeeping criteria as data (io/formats/criteria_csv.h) and the verdict (evaluation/seakeeping_criteria.h): the
 // shipped NORDFORSK set holds the published limits, malformed files are refused with the line, and a verdict
 // marks each criterion by its value against its limit.
 #include <catch2/catch.hpp>
@@ -6,8 +6,8 @@
 #include <complex>
 
 #include "evaluation/seakeeping_criteria.h"
-#include "io/criteria_csv.h"
-#include "io/input_error.h"
+#include "io/formats/criteria_csv.h"
+#include "io/formats/input_error.h"
 #include "seakeeping/motions/encounter_frequency.h"
 
 using namespace hullopt;

@@ -3,7 +3,7 @@
 #include <catch2/catch.hpp>
 #include <string>
 
-#include "io/seas_config.h"
+#include "io/config/seas_config.h"
 
 using hullopt::io::InputError;
 using hullopt::io::YamlMap;

@@ -9,8 +9,8 @@
 #include <string>
 #include <vector>
 
-#include "io/input_error.h"
-#include "io/svg_plot.h"
+#include "io/formats/input_error.h"
+#include "io/report/svg_plot.h"
 
 namespace io = hullopt::io;
 

@@ -4,8 +4,8 @@
 #include <filesystem>
 #include <fstream>
 
-#include "io/input_error.h"
-#include "io/tank_rao_reader.h"
+#include "io/formats/input_error.h"
+#include "io/formats/tank_rao_reader.h"
 
 using hullopt::io::GroupTankRaoBySpeed;
 using hullopt::io::InputError;

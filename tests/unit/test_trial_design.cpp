@@ -6,7 +6,7 @@
 #include <yaml-cpp/yaml.h>
 
 #include "evaluation/trial_design.h"
-#include "io/design_config.h"
+#include "io/config/design_config.h"
 
 using namespace hullopt;
 

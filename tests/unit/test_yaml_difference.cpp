@@ -2,7 +2,7 @@
 // as emitted text, so a tree built in memory equals the same tree read back from a file).
 #include <catch2/catch.hpp>
 
-#include "io/yaml_difference.h"
+#include "io/config/yaml_difference.h"
 
 using hullopt::io::FirstYamlDifference;
 

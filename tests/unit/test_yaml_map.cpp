@@ -5,7 +5,7 @@
 #include <cstdio>
 #include <fstream>
 
-#include "io/yaml_map.h"
+#include "io/config/yaml_map.h"
 
 using hullopt::io::InputError;
 using hullopt::io::YamlMap;

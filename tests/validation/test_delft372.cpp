@@ -3,7 +3,7 @@
 // level), heave restoring C33 = ρ g A_wp = 10782 N/m.
 #include <catch2/catch.hpp>
 
-#include "io/offsets_csv.h"
+#include "io/formats/offsets_csv.h"
 #include "parametric_hull/hydrostatics.h"
 #include "parametric_hull/section_geometry.h"
 

@@ -8,8 +8,8 @@
 #include <cmath>
 #include <iostream>
 
-#include "io/rao_plot.h"
-#include "io/tank_rao_reader.h"
+#include "io/report/rao_plot.h"
+#include "io/formats/tank_rao_reader.h"
 #include "optimizer/rao_peak.h"
 #include "parametric_hull/hydrostatics.h"
 #include "parametric_hull/running_attitude.h"

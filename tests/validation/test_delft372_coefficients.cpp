@@ -18,8 +18,8 @@
 #include <iostream>
 #include <map>
 
-#include "io/coefficients_plot.h"
-#include "io/measured_coefficients_csv.h"
+#include "io/report/coefficients_plot.h"
+#include "io/formats/measured_coefficients_csv.h"
 #include "optimizer/rao_peak.h"
 #include "parametric_hull/running_attitude.h"
 #include "seakeeping/motions/encounter_frequency.h"

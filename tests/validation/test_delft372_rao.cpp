@@ -19,8 +19,8 @@
 #include <cmath>
 #include <iostream>
 
-#include "io/rao_plot.h"
-#include "io/tank_rao_reader.h"
+#include "io/report/rao_plot.h"
+#include "io/formats/tank_rao_reader.h"
 #include "optimizer/rao_peak.h"
 #include "seakeeping/motions/frequency_list.h"
 #include "seakeeping/motions/rao_solver.h"

@@ -7,9 +7,9 @@
 #include <string>
 #include <vector>
 
-#include "io/hull_config.h"
-#include "io/speed_config.h"
-#include "io/water_config.h"
+#include "io/config/hull_config.h"
+#include "io/config/speed_config.h"
+#include "io/config/water_config.h"
 #include "parametric_hull/hydrostatics.h"
 
 using namespace hullopt;

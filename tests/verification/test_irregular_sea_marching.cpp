@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "io/offsets_csv.h"
+#include "io/formats/offsets_csv.h"
 #include "parametric_hull/hydrostatics.h"
 #include "seakeeping/motions/encounter_frequency.h"
 #include "seakeeping/motions/frequency_list.h"

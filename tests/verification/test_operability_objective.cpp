@@ -11,9 +11,9 @@
 #include <fstream>
 #include <string>
 
-#include "io/input_error.h"
-#include "io/msi_objective_config.h"
-#include "io/yaml_map.h"
+#include "io/formats/input_error.h"
+#include "io/config/msi_objective_config.h"
+#include "io/config/yaml_map.h"
 
 namespace {
 

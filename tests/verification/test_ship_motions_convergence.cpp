@@ -14,9 +14,9 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 
-#include "io/hull_config.h"
-#include "io/water_config.h"
-#include "io/yaml_map.h"
+#include "io/config/hull_config.h"
+#include "io/config/water_config.h"
+#include "io/config/yaml_map.h"
 #include "parametric_hull/hydrostatics.h"
 #include "seakeeping/motions/frequency_list.h"
 #include "seakeeping/motions/rao_solver.h"

@@ -14,9 +14,9 @@
 #include <filesystem>
 #include <string>
 
-#include "io/hull_config.h"
-#include "io/speed_config.h"
-#include "io/water_config.h"
+#include "io/config/hull_config.h"
+#include "io/config/speed_config.h"
+#include "io/config/water_config.h"
 #include "parametric_hull/hydrostatics.h"
 #include "seakeeping/strip/strip_geometry.h"
 #include "seakeeping/strip/strip_kernel.h"

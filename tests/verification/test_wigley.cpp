@@ -5,7 +5,7 @@
 #include <cstdio>
 #include <fstream>
 
-#include "io/stl_reader.h"
+#include "io/formats/stl_reader.h"
 #include "parametric_hull/hydrostatics.h"
 #include "parametric_hull/section_geometry.h"
 

@@ -1,0 +1,61 @@
+#include "io/formats/operability_output.h"
+
+#include <cmath>
+#include <fstream>
+#include <iomanip>
+#include <nlohmann/json.hpp>
+
+#include "io/formats/input_error.h"
+
+namespace hullopt::io {
+namespace {
+double Finite(double v, const std::string& what) {
+  if (!std::isfinite(v)) throw InputError("operability: non-finite " + what);
+  return v;
+}
+}  // namespace
+
+std::vector<std::string> WriteOperabilityOutputs(const std::string& dir, const std::vector<DesignOperability>& designs,
+                                                 const sk::ScatterDiagram& diagram,
+                                                 const std::vector<sk::OperabilityCriterion>& criteria,
+                                                 const std::string& scatter_source) {
+  const std::string csv = dir + "/operability.csv", js = dir + "/operability.json";
+  std::ofstream f(csv);
+  if (!f) throw InputError("cannot write " + csv);
+  f << "design,Hs_m," << (diagram.period_is_tp ? "Tp_s" : "Tz_s")
+    << ",probability,msi_mean_pct,msi_forward_pct,msi_lcg_pct,msi_transom_pct,rms_accel_forward_g,"
+       "rms_accel_lcg_g,rms_accel_transom_g";
+  for (const auto& c : criteria) f << ",met_" << c.name;
+  f << "\n" << std::setprecision(10);
+  nlohmann::json j;
+  j["scatter_csv"] = scatter_source;
+  j["period"] = diagram.period_is_tp ? "Tp" : "Tz";
+  j["cells"] = diagram.cells.size();
+  for (const auto& c : criteria)
+    j["criteria"].push_back({{"name", c.name}, {"position", c.position}, {"quantity", c.is_msi ? "msi_pct" : "rms_accel_g"},
+                             {"limit", c.limit}});
+  for (const auto& d : designs) {
+    for (const auto& cell : d.result.cells) {
+      const auto& e = cell.evaluation;
+      f << d.name << ',' << cell.cell.Hs_m << ',' << cell.cell.period_s << ',' << cell.cell.probability << ','
+        << Finite(e.mean.msi_pct, "MSI");
+      for (int k = 0; k < 3; ++k) f << ',' << Finite(e.positions[k].msi_pct, "MSI");
+      for (int k = 0; k < 3; ++k) f << ',' << Finite(e.positions[k].rms_accel_g, "acceleration");
+      for (bool met : cell.criterion_met) f << ',' << (met ? 1 : 0);
+      f << "\n";
+    }
+    nlohmann::json jd;
+    jd["design"] = d.name;
+    jd["weighted_mean_msi_pct"] = Finite(d.result.weighted_mean_msi_pct, "mean MSI");
+    for (size_t k = 0; k < criteria.size(); ++k) jd["criterion_time_pct"][criteria[k].name] = d.result.criterion_time_pct[k];
+    jd["all_criteria_time_pct"] = d.result.all_criteria_time_pct;
+    j["designs"].push_back(jd);
+  }
+  if (!f) throw InputError("cannot write " + csv);
+  std::ofstream g(js);
+  g << j.dump(2) << "\n";
+  if (!g) throw InputError("cannot write " + js);
+  return {"operability.csv", "operability.json"};
+}
+
+}  // namespace hullopt::io
