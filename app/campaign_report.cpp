@@ -6,9 +6,13 @@
 
 #include "app/output_dir.h"
 #include "app/single_design.h"
+#include "evaluation/seakeeping_criteria.h"
 #include "io/report/bodyplan_svg.h"
+#include "io/formats/criteria_csv.h"
+#include "io/report/evaluation_report.h"
 #include "io/report/html_report.h"
 #include "io/report/rao_plot.h"
+#include "io/report/verdict_report.h"
 #include "io/config/yaml_map.h"
 
 namespace hullopt::app {
@@ -23,7 +27,9 @@ SingleDesign Evaluate(const std::string& file, const std::string& name, const st
 
 }  // namespace
 
-void WriteCampaignReport(const std::string& out, const std::string& command, const std::string& config_file) {
+void WriteCampaignReport(const std::string& out, const std::string& command, const std::string& config_file,
+                         const std::vector<std::string>& campaign_warnings,
+                         const std::vector<std::string>& active_set) {
   // A campaign over an analytic objective has no hull: no design to report.
   if (!io::YamlMap::LoadFile(config_file).Has("hull")) return;
   const SingleDesign base = Evaluate(config_file, "baseline", command);
@@ -32,12 +38,33 @@ void WriteCampaignReport(const std::string& out, const std::string& command, con
   r.Paragraph("Campaign config " + config_file + "; best design from best.yaml in " + out +
               ". Both designs evaluated once for this report on the design frequency grid; the campaign's "
               "objective values are in summary.json and history.csv.");
-  r.Heading("Warnings and notes");
-  std::vector<std::string> warnings;
-  for (const auto* s : {&base, &best})
-    for (const auto& w : s->evaluated.rao.warnings) warnings.push_back(s->evaluated.name + ": " + w);
+  r.Heading("Warnings");
+  std::vector<std::string> warnings = campaign_warnings;
+  for (const auto* s : {&base, &best}) {
+    io::EvaluatedDesign d = s->evaluated;
+    for (const auto& w : io::EvaluationWarnings({d})) warnings.push_back(w);
+  }
   r.List(warnings, "No warnings.");
+  r.Heading("Defaults taken (both designs)");
   r.List(base.notes, "No defaults taken.");
+
+  // The verdict of both designs: the baseline is the reference the best is judged against.
+  const eval::CriteriaSet& criteria = io::DefaultCriteria();
+  auto judge = [&](const SingleDesign& s) {
+    return eval::JudgeDesign(s.evaluated.rao, s.evaluated.hull, s.evaluated.evaluation,
+                             eval::BowGeometryOf(s.design), criteria, s.options.response);
+  };
+  const eval::SeakeepingVerdict vbase = judge(base), vbest = judge(best);
+  io::AddVerdictSection(r, criteria, {{"baseline", &vbase}, {"best", &vbest}});
+
+  if (command == "optimize") {
+    r.Heading("Active set at the best design");
+    r.List(active_set, "No design variable at a bound and no constraint active: the optimum is interior.");
+    if (!active_set.empty())
+      r.Paragraph("A bound's gain is a one-sided finite difference: the best design re-evaluated with the "
+                  "variable 1 % of its range beyond the bound (negative = a lower objective). A constraint's gain "
+                  "is not computed; an optimize run with the limit moved gives it.");
+  }
 
   r.Heading("Hydrostatics and variables");
   const auto& hb = base.design.hydrostatics;

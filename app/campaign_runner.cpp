@@ -4,9 +4,12 @@
 #include <omp.h>
 #endif
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 
 #include "app/campaign_report.h"
+#include "app/campaign_setup.h"
 #include "app/mpi_context.h"
 #include "app/output_dir.h"
 #include "app/run_checks.h"
@@ -117,6 +120,66 @@ void CampaignRunner::Start() {
   }
 }
 
+namespace {
+
+/// A variable within this share of its range from a bound is at the bound; a constraint within this share of
+/// max(|limit|, 1) from its limit is active. Coarser than the optimiser's own tolerances on purpose: a report
+/// line for a design the optimiser left a hair inside its bound.
+constexpr double kActiveFraction = 1e-3;
+
+/// The one-sided step beyond a bound for the gain of relaxing it: this share of the variable's range.
+constexpr double kRelaxStepFraction = 0.01;
+
+/// Variables at a bound (with the objective change of moving the bound by kRelaxStepFraction of the range, one
+/// evaluation each, when `evaluator` is given) and active constraints (their gain is not computed).
+std::vector<std::string> ActiveSet(const opt::CampaignDefinition& def, const std::vector<std::string>& quantities,
+                                   const opt::EvaluationRecord& best, opt::Evaluator* evaluator) {
+  std::vector<std::string> lines;
+  char b[600];
+  for (std::size_t i = 0; i < def.variables.size() && i < best.x.size(); ++i) {
+    const auto& v = def.variables[i];
+    const double tol = kActiveFraction * (v.upper - v.lower);
+    const bool lo = best.x[i] <= v.lower + tol, hi = best.x[i] >= v.upper - tol;
+    if (!lo && !hi) continue;
+    std::snprintf(b, sizeof b, "design variable %s = %.6g at its %s bound (range %.6g..%.6g)", v.name.c_str(),
+                  best.x[i], lo ? "lower" : "upper", v.lower, v.upper);
+    std::string line = b;
+    if (evaluator) {
+      std::vector<double> x = best.x;
+      const double step = kRelaxStepFraction * (v.upper - v.lower);
+      x[i] = lo ? v.lower - step : v.upper + step;
+      const opt::EvalResult r = opt::EvaluateSafely(*evaluator, x);
+      if (r.produced) {
+        std::snprintf(b, sizeof b,
+                      "; relaxing it by 1 %% of the range to %.6g changes the objective from %.6g to %.6g "
+                      "(%+.3g; constraints not re-checked)",
+                      x[i], best.result.objective, r.objective, r.objective - best.result.objective);
+        line += b;
+        if (r.objective >= best.result.objective) line += ": no gain, the bound does not hold the optimum back";
+      } else {
+        line += "; relaxing it: the design beyond the bound is refused (" + r.error + ")";
+      }
+    } else {
+      line += "; gain of relaxing it not computed";
+    }
+    lines.push_back(line);
+  }
+  for (const auto& c : def.constraints) {
+    for (std::size_t q = 0; q < quantities.size() && q < best.result.quantities.size(); ++q) {
+      if (quantities[q] != c.quantity) continue;
+      const double value = best.result.quantities[q];
+      const double scale = std::max(std::fabs(c.limit), 1.0);
+      if (std::fabs(value - c.limit) > kActiveFraction * scale) continue;
+      std::snprintf(b, sizeof b, "constraint %s = %.6g active: %s = %.6g (gain of relaxing it not computed)",
+                    c.key.c_str(), c.limit, c.quantity.c_str(), value);
+      lines.push_back(b);
+    }
+  }
+  return lines;
+}
+
+}  // namespace
+
 void CampaignRunner::Finish() {
   const std::string& command = words_.command;
   const opt::CampaignDefinition& def = definition();
@@ -155,7 +218,19 @@ void CampaignRunner::Finish() {
                       def.VariableNames(), campaign_.config.start_source, recs[best].x,
                       resolution_warning.empty() ? std::string(comment)
                                                  : std::string(comment) + "\n# WARNING: " + resolution_warning);
-    WriteCampaignReport(options_.out, command, options_.config);
+    std::vector<std::string> campaign_warnings, active_set;
+    if (!recs[best].result.warning.empty())
+      campaign_warnings.push_back("best design (evaluation " + std::to_string(best) + "): " + recs[best].result.warning);
+    if (!resolution_warning.empty()) campaign_warnings.push_back(resolution_warning);
+    const CampaignWarnings all = CollectWarnings(recs);
+    if (all.count > 0)
+      campaign_warnings.push_back(std::to_string(all.count) + " of " + std::to_string(recs.size()) +
+                                  " evaluations carry a warning (message column of " + journal_->path() +
+                                  "); first, evaluation " + std::to_string(all.first_evaluation) + ": " +
+                                  all.first_message);
+    if (command == "optimize")
+      active_set = ActiveSet(def, campaign_.evaluator->QuantityNames(), recs[best], campaign_.evaluator.get());
+    WriteCampaignReport(options_.out, command, options_.config, campaign_warnings, active_set);
   }
   if (!options_.quiet) kind_.PrintResult(*this, best, s);
 }

@@ -10,6 +10,8 @@
 #include "app/single_design.h"
 #include "app/output_dir.h"
 #include "app/run_checks.h"
+#include "evaluation/seakeeping_criteria.h"
+#include "io/formats/criteria_csv.h"
 #include "io/config/design_config.h"
 #include "io/report/bodyplan_svg.h"
 #include "io/report/evaluation_report.h"
@@ -18,6 +20,7 @@
 #include "io/formats/input_error.h"
 #include "io/formats/rao_csv_writer.h"
 #include "io/report/rao_plot.h"
+#include "io/report/verdict_report.h"
 #include "io/config/yaml_map.h"
 
 namespace hullopt::app {
@@ -27,13 +30,15 @@ std::string Fmt(double v, int digits = 4) { return io::FormatNumber(v, digits); 
 
 void AddReport(const std::string& out, const std::string& config, const YAML::Node& resolved,
                const eval::DesignCase& dc, const io::EvaluatedDesign& d, const std::vector<std::string>& notes,
-               const std::vector<std::string>& warnings) {
+               const std::vector<std::string>& warnings, const eval::SeakeepingVerdict& verdict) {
   io::HtmlReport r("hullopt design: " + d.name);
   r.Paragraph("Config " + config + "; hull at " + Fmt(SpeedKnots(dc)) + " kn (U " +
               Fmt(dc.speed_m_s) + " m/s, Fn " + Fmt(d.parameters.at("Fr"), 3) + "), head seas.");
-  r.Heading("Warnings and notes");
+  r.Heading("Warnings");
   r.List(warnings, "No warnings.");
+  r.Heading("Defaults taken (config.resolved.yaml holds their values)");
   r.List(notes, "No defaults taken.");
+  io::AddVerdictSection(r, io::DefaultCriteria(), {{d.name, &verdict}});
   const auto& h = dc.hydrostatics;
   r.Heading("Hydrostatics and mass");
   r.Table({"quantity", "value", "unit"},
@@ -103,15 +108,26 @@ void RunDesign(const std::string& config, const std::string& out) {
   } catch (const std::domain_error& e) {
     throw io::InputError(config + ": design '" + name + "': " + e.what());
   }
-  io::WriteSvg(io::RaoFigure({d.rao}, {"time-domain strip"}, h.L_m, "RAOs: " + about.str()),
+  // A short title: the figure is drawn at full size in report.html only if the title fits its two columns.
+  std::ostringstream plot_title;
+  plot_title << "RAOs at U " << Fmt(dc.speed_m_s) << " m/s (Fn " << Fmt(d.parameters.at("Fr"), 3) << "), "
+             << dc.solver.rao.sections << " x " << dc.solver.rao.panels << ", Cs " << dc.solver.cs();
+  io::WriteSvg(io::RaoFigure({d.rao}, {eval::MethodName(dc.solver.rao.method)}, h.L_m, plot_title.str()),
                OutPath(out, "rao.svg"));
   const std::vector<io::EvaluatedDesign> designs = {d};
   io::EvaluationReportOptions report;
   report.plot_parameters.clear();  // one design: no MSI-vs-parameter plots
   io::WriteEvaluationOutputs(out, designs, options, report);
-  std::vector<std::string> warnings = io::EvaluationWarnings(designs, report);
-  for (const auto& w : d.rao.warnings) warnings.push_back(w);
-  AddReport(out, config, root.resolved(), dc, d, notes, warnings);
+  // EvaluationWarnings holds the RAO table's warnings already: each is listed and printed once.
+  const std::vector<std::string> warnings = io::EvaluationWarnings(designs, report);
+  eval::SeakeepingVerdict verdict;
+  try {
+    verdict = eval::JudgeDesign(d.rao, d.hull, d.evaluation, eval::BowGeometryOf(dc), io::DefaultCriteria(),
+                                options.response);
+  } catch (const std::invalid_argument& e) {
+    throw io::InputError(config + ": design '" + name + "': seakeeping criteria: " + e.what());
+  }
+  AddReport(out, config, root.resolved(), dc, d, notes, warnings, verdict);
   for (const auto& n : notes) std::cerr << "hullopt: note: " << n << "\n";
   for (const auto& w : warnings) std::cerr << "hullopt: warning: " << w << "\n";
   std::printf("%-8s %6s %6s %10s %10s %10s %8s\n", "design", "Hs_m", "Tz_s", "fwd_g/m", "lcg_g/m", "transom_g/m",
@@ -120,6 +136,7 @@ void RunDesign(const std::string& config, const std::string& out) {
     std::printf("%-8s %6.2f %6.2f %10.4f %10.4f %10.4f %8.1f\n", name.c_str(), s.sea.Hs_m, s.Tz_s,
                 s.positions[0].rms_accel_g / s.sea.Hs_m, s.positions[1].rms_accel_g / s.sea.Hs_m,
                 s.positions[2].rms_accel_g / s.sea.Hs_m, s.mean.msi_pct);
+  std::printf("verdict: %s\n", io::VerdictLine(name, io::DefaultCriteria(), verdict).c_str());
   std::printf("wrote hydrostatics.json, bodyplan.svg, rao.csv, rao.svg, msi.csv, summary.json, report.html to %s\n",
               out.c_str());
 }

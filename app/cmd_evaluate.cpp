@@ -42,7 +42,11 @@
 #include "app/output_dir.h"
 #include "app/run_checks.h"
 #include "io/config/config_path.h"
+#include "evaluation/seakeeping_criteria.h"
+#include "io/formats/criteria_csv.h"
 #include "io/report/evaluation_report.h"
+#include "io/report/html_report.h"
+#include "io/report/verdict_report.h"
 #include "io/formats/input_error.h"
 #include "io/formats/rao_table_csv.h"
 #include "io/config/resolution_check_config.h"
@@ -296,8 +300,43 @@ void Run(const std::string& config_file, const std::string& out_dir) {
       std::printf("\n");
     }
   }
-  for (const auto& w : io::EvaluationWarnings(designs, report))
-    std::cerr << "hullopt: warning: " << w << "\n";
+  const std::vector<std::string> warnings = io::EvaluationWarnings(designs, report);
+  for (const auto& w : warnings) std::cerr << "hullopt: warning: " << w << "\n";
+
+  // report.html: the warnings, the seakeeping verdict of every design, the plots.
+  const eval::CriteriaSet& criteria = io::DefaultCriteria();
+  std::vector<eval::SeakeepingVerdict> verdicts;
+  for (std::size_t i = 0; i < designs.size(); ++i) {
+    try {
+      verdicts.push_back(eval::JudgeDesign(designs[i].rao, designs[i].hull, designs[i].evaluation,
+                                           inputs[i].computed ? eval::BowGeometryOf(*inputs[i].computed)
+                                                              : eval::BowGeometry{},
+                                           criteria, options.response));
+    } catch (const std::invalid_argument& e) {
+      throw io::InputError(inputs[i].where + ": design '" + designs[i].name + "': seakeeping criteria: " + e.what());
+    }
+  }
+  {
+    io::HtmlReport r("hullopt evaluate: " + std::filesystem::path(config_file).filename().string());
+    r.Paragraph("Config " + config_file + "; " + std::to_string(designs.size()) + " design(s) in " +
+                std::to_string(seas.size()) + " head sea(s); MSI model " + sk::MsiModelName(options.msi.model) +
+                ". Numbers per position are in msi.csv and summary.json.");
+    r.Heading("Warnings");
+    r.List(warnings, "No warnings.");
+    std::vector<io::JudgedDesign> judged;
+    for (std::size_t i = 0; i < designs.size(); ++i) judged.push_back({designs[i].name, &verdicts[i]});
+    io::AddVerdictSection(r, criteria, judged);
+    if (report.plots) {
+      r.Heading("Plots");
+      for (const auto& f : files)
+        if (f.size() > 4 && f.substr(f.size() - 4) == ".svg")
+          r.Svg(io::ReadSvgFile((std::filesystem::path(out_dir) / f).string()));
+    }
+    io::WriteHtmlReport((std::filesystem::path(out_dir) / "report.html").string(), r);
+    files.push_back("report.html");
+  }
+  for (std::size_t i = 0; i < designs.size(); ++i)
+    std::printf("verdict: %s\n", io::VerdictLine(designs[i].name, criteria, verdicts[i]).c_str());
 
   std::printf("%-16s %6s %6s %10s %10s %10s %8s\n", "design", "Hs_m", "Tz_s", "fwd_g/m", "lcg_g/m",
               "transom_g/m", "MSI_%");

@@ -18,6 +18,7 @@ SingleDesign EvaluateSingleDesign(io::YamlMap& root, const std::string& name, co
   io::SkipCampaignBlocks(root, &s.notes);
   io::FillDesignDefaults(root, &s.notes);
   s.design = io::LoadDesignCase(root, config, name);
+  io::NoteModelDefaults(root.raw(), s.design, &s.notes);
   const std::vector<sk::SeaState> seas = io::ReadSeas(root);
   s.options.msi = io::ReadMsiOptions(root);
   io::EvaluatedDesign& d = s.evaluated;

@@ -4,7 +4,9 @@
 #include <stdexcept>
 
 #include "evaluation/design_frequencies.h"
+#include "evaluation/trial_design.h"
 #include "io/config/design_config.h"
+#include "parametric_hull/design_variables.h"
 
 namespace hullopt::io {
 
@@ -31,7 +33,11 @@ void FillDesignDefaults(YamlMap& root, std::vector<std::string>* notes) {
   YAML::Node raw = root.raw();
   if (!root.Has("seas")) {
     raw["seas"] = DefaultSeas();
-    if (notes) notes->push_back("seas: the sea-state line Hs 0.5..3.0 m, Tz = 4.5 s + 1.0 s/m Hs, JONSWAP gamma 3.3 (default)");
+    if (notes)
+      notes->push_back(
+          "seas: the sea-state line Hs 0.5..3.0 m, Tz = 4.5 s + 1.0 s/m Hs, JONSWAP gamma 3.3 (default, the "
+          "reference paper's): accelerations, MSI and the verdict hold for these head seas only; give the route's "
+          "seas (seas:) for its verdict");
   }
   const bool has_solver = root.Has("solver");
   if (has_solver && raw["solver"].IsMap() && raw["solver"]["frequencies"]) return;
@@ -61,8 +67,65 @@ void FillDesignDefaults(YamlMap& root, std::vector<std::string>* notes) {
     std::ostringstream s;
     s << "solver.frequencies: " << grid.values.size() << " wave frequencies, omega " << grid.values.front() << " to "
       << grid.values.back() << " rad/s (default grid of L " << d.hydrostatics.L_m << " m and U " << d.speed_m_s
-      << " m/s)";
+      << " m/s): the RAOs are computed at these frequencies; a peak the grid under-samples is a warning";
     notes->push_back(s.str());
+  }
+}
+
+void NoteModelDefaults(const YAML::Node& raw, const eval::DesignCase& d, std::vector<std::string>* notes) {
+  if (!notes) return;
+  auto has = [&](const char* block, const char* key) {
+    return raw[block] && raw[block].IsMap() && raw[block][key];
+  };
+  std::ostringstream s;
+  auto push = [&] {
+    notes->push_back(s.str());
+    s.str("");
+  };
+  if (!has("solver", "Cs")) {
+    s << "solver.Cs = " << d.solver.cs()
+      << " (default): sectional viscous damping D = 1/2 Cs rho U v B; with Cs = 0 the heave and pitch peaks are "
+         "the potential-flow values, the paper's Cs 0.05-0.15 lowers them (hullopt calibrate fits Cs to tank data)";
+    push();
+  }
+  if (!has("solver", "sections") || !has("solver", "panels")) {
+    s << "solver.sections x panels = " << d.solver.rao.sections << " x " << d.solver.rao.panels
+      << " (default, the paper's resolution): resolution_check: { enabled: true } reruns the design finer and "
+         "reports how far the RAO peaks and MSI move";
+    push();
+  }
+  if (!has("mass", "lcg_m_from_ap")) {
+    s << "mass.lcg_m_from_ap = LCB = " << d.mass.lcg_m_from_ap
+      << " m (default): the hull floats level; the CG is the pitch axis and fixes the passenger positions";
+    push();
+  }
+  if (!has("mass", "kyy_m") && !has("mass", "kyy_over_L")) {
+    s << "mass.kyy_m = " << eval::kDefaultKyyOverL << " L = " << d.mass.kyy_m
+      << " m (default, usual for fast craft): the pitch inertia grows with k_yy^2 and sets the pitch natural "
+         "frequency; a larger k_yy moves the pitch peak to lower frequency";
+    push();
+  }
+  if (!has("mass", "kg_m") && !has("mass", "kg_over_T")) {
+    s << "mass.kg_m = T = " << d.mass.kg_m
+      << " m (default): KG does not enter heave and pitch in head seas; it only keeps the hydrostatics plausible";
+    push();
+  }
+  const YAML::Node parametric = raw["hull"] && raw["hull"].IsMap() ? raw["hull"]["parametric"] : YAML::Node();
+  if (parametric && parametric.IsMap() && !parametric["freeboard_over_T"]) {
+    const double f = hull::DesignVariables{}.freeboard_over_T;
+    s << "hull.parametric.freeboard_over_T = " << f << " (default): the deck edge " << f
+      << " T above the waterline; the deck-wetness criterion takes it as the freeboard at the bow";
+    push();
+  }
+  if (!raw["msi"]) {
+    s << "msi: Lloyd's form of O'Hanlon and McCauley, 2 h exposure (default): the MSI and its criterion refer to "
+         "2 h aboard";
+    push();
+  }
+  if (!raw["positions"]) {
+    s << "positions: forward, lcg and transom (default, Davis and Holloway 2003): the mean MSI is their mean; "
+         "add named points (positions: { points: ... }) for a bridge or a saloon";
+    push();
   }
 }
 

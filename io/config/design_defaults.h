@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "evaluation/design_case.h"
 #include "io/config/yaml_map.h"
 
 namespace hullopt::io {
@@ -24,5 +25,10 @@ void SkipCampaignBlocks(YamlMap& root, std::vector<std::string>* notes);
 /// Fills root's raw tree in place: `seas` when absent, `solver.frequencies` when absent (the hull is built once
 /// to find L and U; its errors are the config's). Appends one line per default taken to *notes.
 void FillDesignDefaults(YamlMap& root, std::vector<std::string>* notes);
+
+/// One line per model default the design took (solver Cs, sections and panels; mass LCG, k_yy, KG; msi), each
+/// with its value and its effect on the results: raw is the config as written (after FillDesignDefaults),
+/// design the case read from it. The lines for seas and frequencies come from FillDesignDefaults.
+void NoteModelDefaults(const YAML::Node& raw, const eval::DesignCase& design, std::vector<std::string>* notes);
 
 }  // namespace hullopt::io

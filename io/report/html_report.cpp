@@ -19,7 +19,8 @@ const char* const kStyle =
     "th{background:#eef}td:first-child,th:first-child{text-align:left}"
     "pre{background:#f6f6f6;padding:0.5em;font-size:0.8em;overflow-x:auto}"
     ".fig svg{max-width:100%;height:auto}.row{display:flex;gap:1em;flex-wrap:wrap}"
-    ".row>div{flex:1 1 45%;min-width:300px}.row svg{max-width:100%;height:auto}";
+    ".row>div{flex:1 1 45%;min-width:300px}.row svg{max-width:100%;height:auto}"
+    "td.ok{background:#e3f4e1}td.fail{background:#fbe0dd;font-weight:bold}td.nj{color:#888}td.txt{text-align:left;white-space:normal}td.ok,td.fail,td.nj,td.nw{white-space:nowrap}";
 
 void ReplaceAll(std::string* s, const std::string& from, const std::string& to) {
   for (auto p = s->find(from); p != std::string::npos; p = s->find(from, p + to.size())) s->replace(p, from.size(), to);
@@ -75,6 +76,22 @@ void HtmlReport::Table(const std::vector<std::string>& header, const std::vector
   for (const auto& r : rows) {
     body_ += "<tr>";
     for (const auto& c : r) body_ += "<td>" + HtmlEscape(c) + "</td>";
+    body_ += "</tr>\n";
+  }
+  body_ += "</table>\n";
+}
+
+void HtmlReport::ClassedTable(const std::vector<std::string>& header, const std::vector<std::vector<std::string>>& rows,
+                              const std::vector<std::vector<std::string>>& classes) {
+  body_ += "<table><tr>";
+  for (const auto& h : header) body_ += "<th>" + HtmlEscape(h) + "</th>";
+  body_ += "</tr>\n";
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    body_ += "<tr>";
+    for (std::size_t j = 0; j < rows[i].size(); ++j) {
+      const std::string cls = i < classes.size() && j < classes[i].size() ? classes[i][j] : "";
+      body_ += (cls.empty() ? "<td>" : "<td class=\"" + HtmlEscape(cls) + "\">") + HtmlEscape(rows[i][j]) + "</td>";
+    }
     body_ += "</tr>\n";
   }
   body_ += "</table>\n";

@@ -20,6 +20,10 @@ class HtmlReport {
   void Paragraph(const std::string& text);
   /// A table; every row should have header.size() cells.
   void Table(const std::vector<std::string>& header, const std::vector<std::vector<std::string>>& rows);
+  /// A table whose cells carry a class each (same shape as rows; missing = none): "ok" (green), "fail" (red),
+  /// "nj" (grey, not judged) mark a verdict; "txt" left-aligns a text cell, "nw" keeps one on one line.
+  void ClassedTable(const std::vector<std::string>& header, const std::vector<std::vector<std::string>>& rows,
+                    const std::vector<std::vector<std::string>>& classes);
   /// An SVG document's text, inlined (an XML declaration or DOCTYPE before <svg is dropped).
   void Svg(const std::string& svg_text);
   /// Several SVG documents side by side, each with a caption.

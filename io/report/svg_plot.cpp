@@ -19,11 +19,13 @@ const char* const kPalette[] = {"#1f77b4", "#ff7f0e", "#2ca02c", "#d62728", "#94
                                 "#8c564b", "#e377c2", "#7f7f7f", "#bcbd22", "#17becf"};
 constexpr int kPaletteSize = 10;
 const char* const kFont = "DejaVu Sans, Helvetica, Arial, sans-serif";
-constexpr double kTickFont = 11.0;
+constexpr double kTickFont = 12.0;
 constexpr double kLabelFont = 12.5;
 constexpr double kTitleFont = 13.5;
-constexpr double kLegendFont = 11.0;
+constexpr double kLegendFont = 12.0;
 constexpr double kFigureTitleFont = 16.0;
+constexpr double kFootnoteFont = 11.0;
+constexpr double kFootnoteLine = 14.0;  // [px] line spacing of a footnote over several lines
 // Average advance of a DejaVu Sans glyph as a fraction of the font size (for layout estimates only).
 constexpr double kCharWidth = 0.58;
 
@@ -688,10 +690,19 @@ std::string RenderSvg(const PlotFigure& figure) {
   for (int c = 0; c < cols; ++c) col_x[c + 1] = col_x[c] + col_w[c];
   const double cell_h = figure.panel_height_px;
   const double title_h = figure.title.empty() ? 6.0 : 34.0;
-  const double foot_h = figure.footnote.empty() ? 6.0 : 24.0;
+  // The footnote may run over several lines ('\n'), so that it does not widen the figure.
+  std::vector<std::string> foot_lines;
+  for (std::size_t a = 0; !figure.footnote.empty();) {
+    const std::size_t b = figure.footnote.find('\n', a);
+    foot_lines.push_back(figure.footnote.substr(a, b == std::string::npos ? std::string::npos : b - a));
+    if (b == std::string::npos) break;
+    a = b + 1;
+  }
+  const double foot_h = foot_lines.empty() ? 6.0 : 10.0 + kFootnoteLine * static_cast<double>(foot_lines.size());
   // Wide enough for the titles (bold glyphs ~8 % wider than the layout estimate).
   const double title_w = 1.08 * TextWidth(figure.title, kFigureTitleFont) + 40.0;
-  const double foot_w = TextWidth(figure.footnote, 10.0) + 30.0;
+  double foot_w = 0.0;
+  for (const auto& l : foot_lines) foot_w = std::max(foot_w, TextWidth(l, kFootnoteFont) + 30.0);
   const double width = std::max({col_x[cols] + 5.0, title_w, foot_w});
   const double height = title_h + rows * cell_h + foot_h;
 
@@ -710,9 +721,9 @@ std::string RenderSvg(const PlotFigure& figure) {
     DrawPanel(o, figure.panels[i], static_cast<int>(i), col_x[c], title_h + r * cell_h,
               outside[i] ? col_w[c] : figure.panel_width_px, cell_h, outside[i]);
   }
-  if (!figure.footnote.empty())
-    o << "<text x=\"12\" y=\"" << Num(height - 8) << "\" font-size=\"10\" fill=\"#666\">"
-      << Escape(figure.footnote) << "</text>\n";
+  for (std::size_t k = 0; k < foot_lines.size(); ++k)
+    o << "<text x=\"12\" y=\"" << Num(height - 8 - kFootnoteLine * static_cast<double>(foot_lines.size() - 1 - k))
+      << "\" font-size=\"" << kFootnoteFont << "\" fill=\"#666\">" << Escape(foot_lines[k]) << "</text>\n";
   o << "</svg>\n";
   return o.str();
 }

@@ -79,7 +79,7 @@ struct PlotPanel {
 
 struct PlotFigure {
   std::string title;     ///< over the whole figure (may be empty)
-  std::string footnote;  ///< small text under the panels (source, conditions)
+  std::string footnote;  ///< small text under the panels (source, conditions); '\n' starts a new line
   int columns = 0;       ///< panels per row; 0 = automatic (up to 3)
   double panel_width_px = 440.0;
   double panel_height_px = 320.0;
