@@ -11,7 +11,7 @@ links are scored with the same band, points and score as scripts/delft372_links.
 Usage:
   PYTHONPATH=build/python /usr/bin/python3 scripts/delft372_forced.py --out out/forced
       [--force momentum|pressure] [--amplitude-scale 1|0.1] [--attitude zero|running] [--demihull]
-      [--fn 0.75 ...] [--sections 40] [--panels 14]
+      [--test heave|pitch|both] [--fn 0.75 ...] [--sections 40] [--panels 14]
 
 Outputs in --out: forced.md (the table and the score), forced.csv (one row per speed, link and measured point).
 """
@@ -43,6 +43,7 @@ def main(argv=None):
     ap.add_argument("--amplitude-scale", type=float, default=1.0, help="times the tests' amplitudes (default 1)")
     ap.add_argument("--attitude", choices=("zero", "running"), default="zero")
     ap.add_argument("--demihull", action="store_true", help="one demihull alone, values x 2 (not the pair)")
+    ap.add_argument("--test", choices=("heave", "pitch", "both"), default="both", help="which forced tests")
     ap.add_argument("--fn", type=float, action="append")
     ap.add_argument("--sections", type=int, default=40)
     ap.add_argument("--panels", type=int, default=14)
@@ -63,6 +64,8 @@ def main(argv=None):
         x_r = centres[Fn][0]
         computed[Fn] = {}
         for test, names in TEST_LINKS.items():
+            if a.test not in ("both", test):
+                continue
             d = measured[(measured.Fn == Fn) & (measured.trim_sinkage == trim) & (measured.link == names[0])]
             xs = sorted(x for x in d["x"] if links.in_band(x, x_r))
             values = {name: [] for name in names}
