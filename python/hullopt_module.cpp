@@ -308,9 +308,10 @@ PYBIND11_MODULE(_hullopt, m) {
   m.def(
       "calm_water",
       [](const hull::HullForm& h, const hull::MassProperties& mass, double speed_m_s, const std::string& sectional_force,
-         int sections, int panels, int body, const py::object& attitude, const py::object& water) {
+         int sections, int panels, int body, const py::object& attitude, bool elevation, const py::object& water) {
         const io::WaterOptions w = WaterOf(water);
         sk::CalmWaterOptions o;
+        o.elevation = elevation;
         if (sectional_force != "momentum" && sectional_force != "pressure")
           throw std::invalid_argument("sectional_force must be 'momentum' or 'pressure', got '" + sectional_force + "'");
         o.sectional_force = sectional_force == "pressure" ? sk::SectionalForce::kPressure : sk::SectionalForce::kMomentum;
@@ -321,6 +322,7 @@ PYBIND11_MODULE(_hullopt, m) {
           d["hydrodynamic_heave_N"] = f.hydrodynamic_heave_N, d["hydrodynamic_moment_N_m"] = f.hydrodynamic_moment_N_m;
           d["x_m"] = Array(f.x_m), d["force_N_per_m"] = Array(f.force_N_per_m),
           d["buoyancy_N_per_m"] = Array(f.buoyancy_N_per_m);
+          if (elevation) d["elevation_outer_m"] = Array(f.elevation_outer_m), d["elevation_inner_m"] = Array(f.elevation_inner_m);
         };
         if (!attitude.is_none()) {  // the force at a given (sinkage_m + down, trim_deg + bow up)
           const auto a = attitude.cast<std::pair<double, double>>();
@@ -347,11 +349,13 @@ PYBIND11_MODULE(_hullopt, m) {
       },
       py::arg("hull"), py::arg("mass"), py::arg("speed_m_s"), py::arg("sectional_force") = "momentum",
       py::arg("sections") = 40, py::arg("panels") = 14, py::arg("body") = -1, py::arg("attitude") = py::none(),
-      py::arg("water") = py::none(),
+      py::arg("elevation") = false, py::arg("water") = py::none(),
       "Calm water on the strips of the instantaneous hull at speed_m_s [m/s]: the running sinkage_m (+ down, at "
       "the LCG) and trim_deg (+ bow up) where the steady force and moment vanish, with the steady sectional force "
       "force_N_per_m along x_m (bow first). attitude=(sinkage_m, trim_deg) gives the steady force at that "
-      "attitude instead of iterating. The hull as given floats at rest (its weight is its buoyancy at rest).");
+      "attitude instead of iterating. elevation=True adds elevation_outer_m and elevation_inner_m, the steady "
+      "free-surface elevation at the water line beside each station (+ up; inner: multihulls only). The hull as "
+      "given floats at rest (its weight is its buoyancy at rest).");
 
   m.def(
       "forced_oscillation",

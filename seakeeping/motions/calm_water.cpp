@@ -20,6 +20,52 @@ void CheckScalars(double speed_m_s, double rho_kg_m3, double g_m_s2, const CalmW
     throw std::invalid_argument("calm water: U, rho and g must be finite and > 0");
 }
 
+// The steady elevation at the water-line points of one side (outer: the free surface beside them lies away from
+// the centre plane), η_n = −(1/g) dφ/dt of their mean potential along the march: φ comes from the pressure
+// form's transport rows of a contour whose only motion is a unit speed of the selected water-line points
+// (then ρT = ρ Σ φ over them, contour_motion.h), applied to the march's sources; central differences in time
+// (one-sided at the ends). Empty when the side has no water-line point anywhere.
+std::vector<double> SideElevation(const std::vector<std::vector<Panel>>& panels, const std::vector<ContourMotion>& motions,
+                                  const std::vector<Eigen::VectorXd>& sources, double dt, double rho, double g,
+                                  bool outer) {
+  const int steps = static_cast<int>(panels.size());
+  std::vector<ContourMotion> probe(steps);
+  std::vector<int> count(steps, 0);
+  bool any = false;
+  for (int n = 0; n < steps; ++n) {
+    probe[n].normal_speed_m_s.assign(panels[n].size(), 0.0);
+    for (WaterlinePoint w : motions[n].waterline) {
+      if ((w.outward * w.y_m > 0.0) != outer) continue;
+      w.speed_m_s = -1.0;  // T = −Σ φ ẏ_out = Σ φ
+      probe[n].waterline.push_back(w);
+      ++count[n];
+      any = true;
+    }
+  }
+  if (!any) return {};
+  StripOperatorOptions o;
+  o.sectional_force = SectionalForce::kPressure;
+  o.layout = StationLayout::kCellFaces;
+  o.use_mirror_symmetry = true;
+  const StripOperators ops = BuildStripOperators(panels, dt, rho, g, o, &probe);
+  if (ops.TimeInvariant()) return {};
+  std::vector<double> phi(steps, 0.0);
+  for (int n = 0; n < steps; ++n) {
+    if (count[n] == 0 || ops.PanelCount(n) == 0) continue;
+    double t = ops.TransportCurrent(n).dot(sources[n]);
+    for (int k = 0; k < n; ++k)
+      if (ops.PanelCount(k) > 0) t += ops.TransportMemory(n, k).dot(sources[k]);
+    phi[n] = t / (rho * count[n]);
+  }
+  std::vector<double> eta(steps, 0.0);
+  for (int n = 0; n < steps; ++n) {
+    if (count[n] == 0) continue;
+    const int a = std::max(n - 1, 0), b = std::min(n + 1, steps - 1);
+    eta[n] = -(phi[b] - phi[a]) / (g * (b - a) * dt);
+  }
+  return eta;
+}
+
 }  // namespace
 
 bool CalmWaterOptions::IsValid(std::string* error) const {
@@ -68,12 +114,14 @@ SteadyForce CalmWaterForce(const hull::HullForm& at_rest, const hull::MassProper
   StripMarcher marcher(ops);
 
   SteadyForce r;
+  std::vector<Eigen::VectorXd> sources;
   for (int n = 0; n < steps; ++n) {
     Eigen::VectorXd vn = Eigen::VectorXd::Zero(ops.PanelCount(n));
     const auto& index = ops.ReducedIndex(n);
     const auto& share = ops.ReducedShare(n);
     for (std::size_t p = 0; p < index.size(); ++p) vn(index[p]) += share[p] * motions[n].normal_speed_m_s[p];
     const double f = marcher.Advance(vn);
+    if (options.elevation) sources.push_back(marcher.Sources().back());
     const double buoyancy = rho_kg_m3 * g_m_s2 * WetSectionSums(hull, grid.x_m[n], hull.draught_m, geo).area_m2;
     const double weight = rho_kg_m3 * g_m_s2 * WetSectionSums(at_rest, grid.x_m[n], at_rest.draught_m, geo).area_m2;
     const double lever = grid.x_m[n] - mass.lcg_m_from_ap, w = grid.weight_m[n];
@@ -85,6 +133,10 @@ SteadyForce CalmWaterForce(const hull::HullForm& at_rest, const hull::MassProper
     r.heave_N += (f + buoyancy - weight) * w;
     r.moment_N_m -= lever * (f + buoyancy - weight) * w;
   }
+  if (options.elevation) {
+    r.elevation_outer_m = SideElevation(panels, motions, sources, dt, rho_kg_m3, g_m_s2, true);
+    r.elevation_inner_m = SideElevation(panels, motions, sources, dt, rho_kg_m3, g_m_s2, false);
+  }
   return r;
 }
 
@@ -95,12 +147,14 @@ CalmWaterResult SolveRunningAttitude(const hull::HullForm& at_rest, const hull::
   const CellFaceStations grid = CellFaceGrid(at_rest, options.geometry.sections);
   CalmWaterResult r;
   r.attitude.pivot_x_m = mass.lcg_m_from_ap;
+  CalmWaterOptions iterate = options;  // the elevation only at the converged attitude
+  iterate.elevation = false;
   for (int it = 1; it <= options.max_iterations; ++it) {
     r.iterations = it;
     hull::HullForm hull;
     try {
       hull = hull::ApplyRunningAttitude(at_rest, r.attitude);
-      r.force = CalmWaterForce(at_rest, mass, r.attitude, speed_m_s, rho_kg_m3, g_m_s2, options);
+      r.force = CalmWaterForce(at_rest, mass, r.attitude, speed_m_s, rho_kg_m3, g_m_s2, iterate);
     } catch (const std::exception& e) {
       r.note = std::string("the attitude iteration left the hull's range: ") + e.what();
       return r;

@@ -37,6 +37,9 @@ struct CalmWaterOptions {
   int max_iterations = 30;          ///< attitude iterations before giving up, >= 1
   double sinkage_tolerance_m = 1e-5;  ///< [m] last sinkage step below this ... (and)
   double trim_tolerance_deg = 1e-3;   ///< [deg] ... last trim step below this: converged
+  /// Also the steady elevation at the hull's water line (SteadyForce::elevation_*): one more set of strip
+  /// operators per side. SolveRunningAttitude computes it at the converged attitude only.
+  bool elevation = false;
   bool IsValid(std::string* error) const;
 };
 
@@ -49,6 +52,10 @@ struct SteadyForce {
   std::vector<double> x_m;                 ///< [m from AP] stations, bow first
   std::vector<double> force_N_per_m;       ///< [N/m] steady hydrodynamic force per unit length f_n, + up
   std::vector<double> buoyancy_N_per_m;    ///< [N/m] ρ g A_n at the attitude
+  /// [m] with options.elevation: the linear free-surface elevation η = −φ_t/g of the steady disturbance at the
+  /// water line of each station, + up, on the outer side of the bodies and (multihulls) on the inner side (the
+  /// mean of the points of that side); empty without, and for a strip whose sections do not change.
+  std::vector<double> elevation_outer_m, elevation_inner_m;
 };
 
 struct CalmWaterResult {
