@@ -31,6 +31,16 @@ bool Finite(double v) { return std::isfinite(v); }
 
 }  // namespace
 
+std::vector<ObliqueStripStation> ObliqueStripStations(const hull::HullForm& hull,
+                                                      const StripGeometryOptions& options) {
+  // The strip solvers' grid and sections; the speed only sets the kernel's time step, unused here.
+  constexpr double kAnySpeed = 1.0, kAnyRho = 1000.0, kAnyG = 9.81;
+  const StripKernel k = StripKernelGeometry(hull, options, kAnySpeed, kAnyRho, kAnyG);
+  std::vector<ObliqueStripStation> out(k.Steps());
+  for (int n = 0; n < k.Steps(); ++n) out[n] = {k.x_m[n], k.Weight(n), k.panels[n]};
+  return out;
+}
+
 bool ObliqueMassProperties::IsValid(std::string* error) const {
   std::ostringstream os;
   if (!(mass_kg > 0) || !Finite(mass_kg))

@@ -1,6 +1,7 @@
 #pragma once
 // The Wigley hull of data/peers-oblique/ (L 3 m, B 0.3 m, T 0.1875 m) as oblique-strip-theory stations, and
 // its mass properties there, for the oblique-sea tests.
+#include <cmath>
 #include <vector>
 
 #include "seakeeping/motions/oblique_strip_theory.h"
@@ -12,23 +13,14 @@ namespace hullopt::test {
 constexpr double kWigleyL = 3.0, kWigleyB = 0.3, kWigleyT = 0.1875;
 
 /// `sections` stations at the cell midpoints of the hull's length (weight L/sections each), panelled with
-/// `panels` panels by the strip geometry's own route (StripSectionPanels of the analytic Wigley stations).
-/// x from the aft perpendicular, so midships is x = L/2.
+/// `panels` panels per section by the strip solvers' own route (sk::ObliqueStripStations). x from the aft
+/// perpendicular, so midships is x = L/2.
 inline std::vector<sk::ObliqueStripStation> WigleyObliqueStations(int sections, int panels) {
-  const hull::HullForm h = WigleyHull(kWigleyL, kWigleyB, kWigleyT, 201, 61);
   sk::StripGeometryOptions o;
   o.sections = sections;
   o.panels = panels;
-  std::vector<sk::ObliqueStripStation> out;
-  const double dx = kWigleyL / sections;
-  for (int n = 0; n < sections; ++n) {
-    sk::ObliqueStripStation st;
-    st.x_m = (n + 0.5) * dx;
-    st.weight_m = dx;
-    st.panels = sk::StripSectionPanels(h, st.x_m, kWigleyT, o);
-    out.push_back(st);
-  }
-  return out;
+  o.layout = sk::StationLayout::kCellMidpoints;
+  return sk::ObliqueStripStations(WigleyHull(kWigleyL, kWigleyB, kWigleyT, 201, 61), o);
 }
 
 /// The data's mass: 75 kg (the displaced mass at ρ = 1000), CG at midships, z_G = KG − T; I44 = m (0.35 B)²,

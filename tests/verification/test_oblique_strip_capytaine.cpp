@@ -50,8 +50,8 @@ constexpr double kExcitation = 0.25;
 // adds to the amplitude error (28.5 % measured at worst, |F4| at 135°, KG 0.17).
 constexpr double kExcitationComplex = 0.5;
 // RAOs off the roll resonance, except roll: the motions are mass- and stiffness-dominated; the heave/pitch
-// resonance near 6–7 rad/s is damped by B33/B55, which agree within 10 % in short waves (6.0 % measured at
-// worst, sway at 135°, KG 0.13).
+// resonance near 6–7 rad/s is damped by B33/B55, which agree within 10 % in short waves. Measured: 6.0 % at
+// worst (sway at 135°, KG 0.13).
 constexpr double kRao = 0.1;
 // Roll RAO off the resonance: F4/(C44 − ω²(I44 + A44) + iωB44) with the lateral coefficients' errors (26 % at
 // KG 0.17, 135°). At the KG 0.13 roll resonance (4.3–4.7 rad/s) only the potential roll damping B44 limits the
