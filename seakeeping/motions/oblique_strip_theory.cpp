@@ -1,9 +1,12 @@
 #include "seakeeping/motions/oblique_strip_theory.h"
 
+#include <algorithm>
 #include <cmath>
 #include <exception>
 #include <sstream>
 #include <stdexcept>
+
+#include "seakeeping/green/gauss_legendre.h"
 
 namespace hullopt::sk {
 namespace {
@@ -28,6 +31,35 @@ SectionalMode ModeOf(int dof, double xi) {
 }
 
 bool Finite(double v) { return std::isfinite(v); }
+
+// Area integrals over a section (closed by its waterline) of (z − z_G) e^{kz − ik_y y} and y e^{kz − ik_y y}, per
+// unit amplitude without ρg: ∫∫_A g dA = ∮ G n_z dl with G(y, z) = ∫_0^z g(y, z') dz' (divergence theorem; G = 0
+// on the waterline, so the lid adds nothing), n the panel normal (out of the section). Gauss–Legendre along each
+// panel and along [z, 0].
+std::array<C, 2> SectionPressureMoments(const std::vector<Panel>& panels, double k, double ky, double zg) {
+  const QuadratureRule& rule = GaussLegendre01(8);
+  std::array<C, 2> out{};
+  for (const Panel& p : panels) {
+    const double l = p.Length(), nz = p.Normal()[1];
+    const int parts = 1 + static_cast<int>(l * std::max(k, std::fabs(ky)) / 0.5);
+    for (int s = 0; s < parts; ++s)
+      for (std::size_t q = 0; q < rule.nodes.size(); ++q) {
+        const double t = (s + rule.nodes[q]) / parts;
+        const double y = p.y1 + t * (p.y2 - p.y1), z = p.z1 + t * (p.z2 - p.z1);
+        // ∫_0^z e^{kz'} dz' and ∫_0^z z' e^{kz'} dz' (z <= 0; kz moderate on a hull section, 8 points).
+        double e0 = 0.0, e1 = 0.0;
+        for (std::size_t r = 0; r < rule.nodes.size(); ++r) {
+          const double zr = z * rule.nodes[r], w = z * rule.weights[r] * std::exp(k * zr);
+          e0 += w;
+          e1 += w * zr;
+        }
+        const C lat = std::polar(rule.weights[q] * l / parts * nz, -ky * y);
+        out[0] += lat * (e1 - zg * e0);
+        out[1] += lat * y * e0;
+      }
+  }
+  return out;
+}
 
 }  // namespace
 
@@ -220,6 +252,14 @@ ObliqueStripResult SolveObliqueStripTheory(const std::vector<ObliqueStripStation
           const SectionalMode md = ModeOf(d, x);
           wr.froude_krylov[d] += phase * md.factor * fk[md.mode];
           wr.diffraction[d] += phase * md.factor * df[md.mode];
+        }
+        if (options.longitudinal_froude_krylov) {
+          // −∫∫ p (z − z_G) n_x dS = −∫∫∫ (z − z_G) ∂p/∂x dV and ∫∫ p y n_x dS = ∫∫∫ y ∂p/∂x dV, with
+          // ∂p/∂x = −ik cosβ p (the waterplane closing the volume has n_x = 0).
+          const std::array<C, 2> m = SectionPressureMoments(stations[wet[s]].panels, k, k * std::sin(beta), zg);
+          const C ikc(0.0, k * std::cos(beta) * rho * g);
+          wr.froude_krylov[4] += phase * ikc * m[0];
+          wr.froude_krylov[5] -= phase * ikc * m[1];
         }
       }
       Eigen::VectorXcd rhs(5);

@@ -2,8 +2,8 @@
 // Zero-speed strip theory in oblique seas for sway, heave, roll, pitch and yaw (Salvesen, Tuck & Faltinsen
 // 1970 with U = 0): each station is a 2D frequency-domain problem (frequency_domain_section.h, modes sway,
 // heave and roll), its coefficients are moved to roll about the centre of gravity and integrated along the
-// hull, the wave excitation is the Froude–Krylov pressure of the oblique wave over each section plus the STF
-// (Haskind) diffraction force, and the 5-dof linear equations give the RAOs. docs/theory.md, "Oblique seas
+// hull, the wave excitation is the Froude–Krylov pressure of the oblique wave over the hull (each section's
+// girth and, for pitch and yaw, the longitudinal slope) plus the STF (Haskind) diffraction force, and the 5-dof linear equations give the RAOs. docs/theory.md, "Oblique seas
 // at zero speed", states the formulas.
 //
 // Axes and conventions (the same as the 3D panel-method data in data/peers-oblique/, docs/conventions.md):
@@ -67,6 +67,11 @@ struct ObliqueStripOptions {
   double g_m_s2 = 9.81;       ///< [m/s²]
   /// [m/s] ship speed: only 0 for now (the forward-speed terms are not implemented).
   double speed_m_s = 0.0;
+  /// Froude–Krylov moment of the incident pressure on the hull's longitudinal slope (the n_x parts of the pitch
+  /// normal (z − z_G) n_x and of the yaw normal −y n_x), from the volume form −∫∫∫ (z − z_G) ∂p/∂x dV section by
+  /// section: with it the long-wave pitch RAO tends to 1; without it (conventional STF, n_x neglected) to
+  /// I_L/(I_L + V(z_B − z_G)). Diffraction and radiation keep the strip normals either way.
+  bool longitudinal_froude_krylov = true;
   /// Settings of the 2D section solver (its rho and g are replaced by the two above).
   FrequencyDomainOptions section;
   bool IsValid(std::string* error) const;
