@@ -35,7 +35,7 @@ bool Finite(double v) { return std::isfinite(v); }
 // Area integrals over a section (closed by its waterline) of (z − z_G) e^{kz − ik_y y} and y e^{kz − ik_y y}, per
 // unit amplitude without ρg: ∫∫_A g dA = ∮ G n_z dl with G(y, z) = ∫_0^z g(y, z') dz' (divergence theorem; G = 0
 // on the waterline, so the lid adds nothing), n the panel normal (out of the section). Gauss–Legendre along each
-// panel and along [z, 0].
+// panel, G in closed form.
 std::array<C, 2> SectionPressureMoments(const std::vector<Panel>& panels, double k, double ky, double zg) {
   const QuadratureRule& rule = GaussLegendre01(8);
   std::array<C, 2> out{};
@@ -46,13 +46,12 @@ std::array<C, 2> SectionPressureMoments(const std::vector<Panel>& panels, double
       for (std::size_t q = 0; q < rule.nodes.size(); ++q) {
         const double t = (s + rule.nodes[q]) / parts;
         const double y = p.y1 + t * (p.y2 - p.y1), z = p.z1 + t * (p.z2 - p.z1);
-        // ∫_0^z e^{kz'} dz' and ∫_0^z z' e^{kz'} dz' (z <= 0; kz moderate on a hull section, 8 points).
-        double e0 = 0.0, e1 = 0.0;
-        for (std::size_t r = 0; r < rule.nodes.size(); ++r) {
-          const double zr = z * rule.nodes[r], w = z * rule.weights[r] * std::exp(k * zr);
-          e0 += w;
-          e1 += w * zr;
-        }
+        // ∫_0^z e^{kz'} dz' = expm1(kz)/k and ∫_0^z z' e^{kz'} dz' = z e^{kz}/k − expm1(kz)/k² (z <= 0), the
+        // latter by its series where kz is small (the closed form cancels there).
+        const double kz = k * z;
+        const double e0 = z * (std::fabs(kz) < 1e-8 ? 1.0 : std::expm1(kz) / kz);
+        const double e1 = std::fabs(kz) < 1e-3 ? z * z * (0.5 + kz / 3.0 + kz * kz / 8.0)
+                                               : z * std::exp(kz) / k - std::expm1(kz) / (k * k);
         const C lat = std::polar(rule.weights[q] * l / parts * nz, -ky * y);
         out[0] += lat * (e1 - zg * e0);
         out[1] += lat * y * e0;
