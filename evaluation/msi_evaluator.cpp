@@ -34,7 +34,7 @@ class MsiEvaluator : public opt::Evaluator, public ResolutionCheckable {
     sk::DesignEvaluation ev;
     sk::OperabilityResult op;
     try {  // a non-finite RAO or response is refused where it is computed: this design is not produced
-      rao = ComputeDesignRaos(d, SeaFrequencies(d));
+      rao = DesignRaos(d);
       if (IsOperability())
         op = sk::EvaluateOperability(rao, d.Extent(), o_.diagram, o_.criteria, {}, o_.evaluation);
       else
@@ -89,7 +89,7 @@ class MsiEvaluator : public opt::Evaluator, public ResolutionCheckable {
   sk::ResolutionCheck CheckResolution(const std::vector<double>& x, int factor,
                                       const sk::ResolutionCheckOptions& options) override {
     const DesignCase d = BuildTrialDesign(basis_, fields_, x);
-    const sk::RaoTable rao = ComputeDesignRaos(d, SeaFrequencies(d));
+    const sk::RaoTable rao = DesignRaos(d);
     sk::DesignEvaluation ev;
     try {
       ev = sk::EvaluateDesign(rao, d.Extent(), spectra_, {}, o_.evaluation);
@@ -156,6 +156,13 @@ class MsiEvaluator : public opt::Evaluator, public ResolutionCheckable {
   }
   using Measure = MsiObjectiveOptions::Measure;
   static constexpr const char* kPositionNames[] = {"forward", "LCG", "transom"};
+  // The design's RAOs on its grid, refined (solver.adaptive_grid) until the MSI of the objective's seas
+  // converges; a scatter diagram's cells refine the peaks only.
+  sk::RaoTable DesignRaos(const DesignCase& d) const {
+    if (IsOperability()) return ComputeDesignRaos(d, SeaFrequencies(d));
+    const GridSeas seas{spectra_, d.Extent(), {}, o_.evaluation};
+    return ComputeDesignRaos(d, SeaFrequencies(d), -1.0, &seas);
+  }
   bool IsOperability() const { return o_.measure == Measure::kScatterMsi || o_.measure == Measure::kDowntime; }
   DesignBasis basis_;
   std::vector<const hull::DesignVariableField*> fields_;

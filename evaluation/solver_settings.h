@@ -4,6 +4,7 @@
 // picks the kernel builder, and the wave frequencies a config may give.
 #include <string>
 
+#include "evaluation/adaptive_frequency_grid.h"
 #include "seakeeping/motions/frequency_list.h"
 #include "seakeeping/motions/rao_solver.h"
 #include "seakeeping/strip/strip_operators.h"
@@ -17,6 +18,8 @@ struct SolverSettings {
   /// How the strip momentum takes the current sources' potential (time-domain strips, momentum form).
   sk::BodyPotential body_potential = sk::BodyPotential::kSourceSum;
   sk::FrequencySpec frequencies;
+  /// How the frequencies (given or default) are refined (solver.adaptive_grid and its caps); on by default.
+  AdaptiveGridOptions grid;
   double cs() const { return rao.motion.damping_cs; }
 };
 
