@@ -18,7 +18,15 @@ const std::vector<std::string> kQuantities = {"L_m", "B_m",  "T_m",  "B_overall_
 class MsiEvaluator : public opt::Evaluator, public ResolutionCheckable {
  public:
   MsiEvaluator(DesignBasis basis, std::vector<const hull::DesignVariableField*> fields, MsiObjectiveOptions o)
-      : basis_(std::move(basis)), fields_(std::move(fields)), o_(std::move(o)), spectra_(sk::BuildSpectra(o_.seas)) {}
+      : basis_(std::move(basis)), fields_(std::move(fields)), o_(std::move(o)), spectra_(sk::BuildSpectra(o_.seas)) {
+    if (!IsOperability()) {
+      grid_spectra_ = spectra_;
+      return;
+    }
+    std::vector<sk::SeaState> cells;
+    for (std::size_t i = 0; i < o_.diagram.cells.size(); ++i) cells.push_back(o_.diagram.Sea(i));
+    grid_spectra_ = sk::BuildSpectra(cells);
+  }
 
   opt::EvalResult Evaluate(const std::vector<double>& x) override {
     opt::EvalResult r;
@@ -156,11 +164,10 @@ class MsiEvaluator : public opt::Evaluator, public ResolutionCheckable {
   }
   using Measure = MsiObjectiveOptions::Measure;
   static constexpr const char* kPositionNames[] = {"forward", "LCG", "transom"};
-  // The design's RAOs on its grid, refined (solver.adaptive_grid) until the MSI of the objective's seas
-  // converges; a scatter diagram's cells refine the peaks only.
+  // The design's RAOs on its grid, refined (solver.adaptive_grid) until the MSI of the objective's seas (or
+  // scatter cells) converges.
   sk::RaoTable DesignRaos(const DesignCase& d) const {
-    if (IsOperability()) return ComputeDesignRaos(d, SeaFrequencies(d));
-    const GridSeas seas{spectra_, d.Extent(), {}, o_.evaluation};
+    const GridSeas seas{grid_spectra_, d.Extent(), {}, o_.evaluation};
     return ComputeDesignRaos(d, SeaFrequencies(d), -1.0, &seas);
   }
   bool IsOperability() const { return o_.measure == Measure::kScatterMsi || o_.measure == Measure::kDowntime; }
@@ -168,6 +175,7 @@ class MsiEvaluator : public opt::Evaluator, public ResolutionCheckable {
   std::vector<const hull::DesignVariableField*> fields_;
   MsiObjectiveOptions o_;
   std::vector<sk::WaveSpectrum> spectra_;
+  std::vector<sk::WaveSpectrum> grid_spectra_;  // what the frequency grid must resolve: the seas or the cells
 };
 
 }  // namespace

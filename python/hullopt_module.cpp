@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "app/commands.h"
+#include "evaluation/adaptive_frequency_grid.h"
 #include "evaluation/hull_plausibility.h"
 #include "evaluation/validity_envelope.h"
 #include "io/config/design_config.h"
@@ -283,8 +284,10 @@ PYBIND11_MODULE(_hullopt, m) {
         sk::RaoTable t;
         {
           py::gil_scoped_release release;
-          t = sk::ComputeRaos(h, mass, speed_m_s, w.rho_kg_m3, w.g_m_s2, omega, o,
-                              sk::TransientGreenKernelBuilder(sc.sectional_force, sc.body_potential));
+          // solver.adaptive_grid (on by default): the peaks refined from omega, as `hullopt rao` does.
+          const sk::RaoSweeper sweeper(h, mass, speed_m_s, w.rho_kg_m3, w.g_m_s2, o,
+                                       sk::TransientGreenKernelBuilder(sc.sectional_force, sc.body_potential));
+          t = eval::SweepAdaptively(sweeper, omega, sc.grid);
         }
         t.warnings.insert(t.warnings.begin(), flags.begin(), flags.end());
         return RaoDict(t);
@@ -293,7 +296,8 @@ PYBIND11_MODULE(_hullopt, m) {
       py::arg("solver") = py::none(), py::arg("water") = py::none(), py::arg("name") = "hull",
       "Heave X3/A [m/m] and pitch X5/(kA) [rad/rad] RAOs (complex, phase lead positive relative to the wave "
       "crest at the CG) at wave frequencies omega_rad_s [rad/s] (increasing) and speed speed_m_s [m/s]. "
-      "solver: a dict as a config's solver: block (sections, panels, Cs, method, path, ...). Returns a dict "
+      "solver: a dict as a config's solver: block (sections, panels, Cs, method, path, adaptive_grid, ...): "
+      "with adaptive_grid on (the default) omega_rad_s is refined around the RAO peaks. Returns a dict "
       "of NumPy arrays omega_rad_s, omega_e_rad_s, heave, pitch and a list of warnings.");
 
   m.def(
@@ -412,7 +416,8 @@ PYBIND11_MODULE(_hullopt, m) {
           },
           py::arg("omega_rad_s") = py::none(),
           "RAOs (as compute_raos) at omega_rad_s [rad/s], by default the grid of `hullopt evaluate`: the "
-          "config's solver.frequencies, else the evaluation grid.");
+          "config's solver.frequencies, else the evaluation grid; with solver.adaptive_grid on (the default) "
+          "that grid refined around the RAO peaks.");
 
   m.def(
       "load_design",

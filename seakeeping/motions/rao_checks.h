@@ -41,8 +41,7 @@ struct RaoPeakFit {
 RaoPeakFit FitRaoPeak(const std::vector<double>& omega_rad_s, const std::vector<std::complex<double>>& v);
 
 /// The under-sampling warning's default advice: the keys of a config's frequency grid.
-inline const char* const kGridAdvice =
-    "refine solver.frequencies there or set solver.adaptive_grid: on (docs/config-reference.md)";
+inline const char* const kGridAdvice = "solver.frequencies, or solver.adaptive_grid: on";
 
 /// Warnings for RAO peaks above kResonanceWarningRao (with their value and frequency) and for peaks the
 /// frequency grid under-samples; empty when none. A peak is under-sampled when both neighbours of the largest
