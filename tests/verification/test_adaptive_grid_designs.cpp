@@ -81,6 +81,22 @@ TEST_CASE("the campaign's start design: no grid warning, MSI of the 4x grid", "[
   d.mass.kg_m = d.hydrostatics.T_m;
   const auto spectra = sk::BuildSpectra(io::ReadSeas(root));
   CheckDesign(d, -1.0, spectra);
+  // The refined table holds the starting grid's samples bitwise as the fixed grid computes them (the kernel
+  // built once and reused by every pass changes no digit), and refinement off is that fixed grid.
+  const eval::GridSeas seas{spectra, d.Extent(), {}, {}};
+  const std::vector<double> start = eval::SeaFrequencies(d);
+  const sk::RaoTable refined = eval::ComputeDesignRaos(d, start, -1.0, &seas);
+  eval::DesignCase fixed = d;
+  fixed.solver.grid.enabled = false;
+  const sk::RaoTable off = eval::ComputeDesignRaos(fixed, start, -1.0, &seas);
+  REQUIRE(off.omega_rad_s == start);
+  std::size_t j = 0;
+  for (std::size_t i = 0; i < start.size(); ++i) {
+    while (j < refined.omega_rad_s.size() && refined.omega_rad_s[j] != start[i]) ++j;
+    REQUIRE(j < refined.omega_rad_s.size());
+    CHECK(refined.heave[j] == off.heave[i]);
+    CHECK(refined.pitch[j] == off.pitch[i]);
+  }
 }
 
 TEST_CASE("the 14-hull study: no grid warning, MSI of the 4x grid", "[adaptive_grid]") {
