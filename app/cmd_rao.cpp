@@ -10,6 +10,7 @@
 #include "app/run_checks.h"
 #include "evaluation/adaptive_frequency_grid.h"
 #include "evaluation/hull_plausibility.h"
+#include "evaluation/strip_attitude.h"
 #include "io/config/design_config.h"
 #include "io/config/hull_config.h"
 #include "io/formats/input_error.h"
@@ -72,8 +73,12 @@ void RunRao(const std::string& config_file, const std::string& out_dir) {
   const std::optional<io::MeasuredRao> measured =
       io::ReadRaoComparison(root, U / std::sqrt(water.g_m_s2 * hs.L_m), hs.L_m, water.g_m_s2);
   root.Finish();
-  // The strips see the hull at its running attitude (the hull itself at even keel).
-  const hull::HullForm running = io::ApplyHullAttitude(hull_opts, hull, mass.lcg_m_from_ap, config_file);
+  // The strips see the hull at its running attitude (the hull itself at even keel): given, or solved in calm
+  // water (solver.steady_flow: on).
+  const hull::RunningAttitude attitude =
+      eval::StripAttitude(hull, mass, U, water, sc, hull_opts.attitude, config_file + ": hull '" + hull_name + "'");
+  const hull::HullForm running = sc.steady_flow ? hull::ApplyRunningAttitude(hull, attitude)
+                                                : io::ApplyHullAttitude(hull_opts, hull, mass.lcg_m_from_ap, config_file);
   try {
     // Sections first: a section that does not reach the waterline is named with its body and station.
     sk::StripKernelGeometry(running, sc.rao.Geometry(), 1.0, water.rho_kg_m3, water.g_m_s2);
@@ -115,9 +120,7 @@ void RunRao(const std::string& config_file, const std::string& out_dir) {
      << (sc.sectional_force == sk::SectionalForce::kPressure ? ", sectional force: pressure form" : "")
      << (sc.body_potential == sk::BodyPotential::kGreenIdentity ? ", body potential: Green's identity" : "")
      << (sc.rao.section_formulation == sk::SectionFormulation::kDirect ? ", sections: direct formulation" : "");
-  if (!hull_opts.attitude.IsEvenKeel())
-    fn << ", running attitude: sinkage " << hull_opts.attitude.sinkage_m << " m (+ down), trim "
-       << hull_opts.attitude.trim_deg << " deg (+ bow up) at x = " << mass.lcg_m_from_ap << " m";
+  if (const std::string note = eval::AttitudeNote(attitude, sc); !note.empty()) fn << ", " << note;
   try {
     std::vector<std::string> header = {"hull: " + hull_name, fn.str()};
     for (const auto& a : hull.adjustments) header.push_back("adjusted: " + a);

@@ -11,6 +11,7 @@
 
 #include <cmath>
 
+#include "seakeeping/motions/calm_water.h"
 #include "seakeeping/motions/forced_oscillation.h"
 #include "seakeeping/motions/frequency_list.h"
 #include "seakeeping/motions/head_sea_ship_model.h"
@@ -140,6 +141,20 @@ void BM_ForcedOscillationRun(benchmark::State& state) {
   }
 }
 BENCHMARK(BM_ForcedOscillationRun)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(1);
+
+// Calm water on the same hull at Fn 0.75, 40 × 14 (sk::SolveRunningAttitude): one strip march per attitude
+// iteration (about 6), each with the strip's operators built once; one thread (one strip, nothing to share).
+void BM_CalmWaterAttitude(benchmark::State& state) {
+  const auto& d = TheDemihull();
+  SetThreads(1);
+  const hullopt::hull::MassProperties mass = hullopt::testing::Delft372Mass();
+  for (auto _ : state) {
+    const auto r = sk::SolveRunningAttitude(d.hull, mass, d.speed, kRho, kG, sk::CalmWaterOptions{});
+    benchmark::DoNotOptimize(r.attitude);
+    state.counters["iterations"] = r.iterations;
+  }
+}
+BENCHMARK(BM_CalmWaterAttitude)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 // Conventional strip theory (method: strip_theory_stf) on the same demihull: 10 wavelengths, every (station,
 // omega_e) section solved by the frequency-domain panel method (a fresh row cache per iteration).

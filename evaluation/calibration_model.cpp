@@ -4,6 +4,7 @@
 #include <cmath>
 #include <memory>
 
+#include "evaluation/strip_attitude.h"
 #include "optimizer/tank_rao_frequency.h"
 #include "seakeeping/motions/validity_range.h"
 
@@ -20,6 +21,11 @@ opt::CsRaoModel StripSolverCsModel(const DesignCase& base, const std::vector<opt
   for (const auto& c : cases) {
     Speed s{base, {}, {}};
     s.design.speed_m_s = c.Fn * std::sqrt(base.water.g_m_s2 * base.hydrostatics.L_m);
+    if (base.solver.steady_flow) {  // each speed's own running attitude (the base holds hull.attitude)
+      s.design.attitude = StripAttitude(base.hull, base.mass, s.design.speed_m_s, base.water, base.solver,
+                                        base.attitude, "calibration case '" + c.label + "'");
+      s.design.running_hull = hull::ApplyRunningAttitude(base.hull, s.design.attitude);
+    }
     s.kernel = BuildDesignKernel(s.design);
     s.grid = opt::WaveFrequencyGrid(c, base.hydrostatics.L_m, base.water.g_m_s2);
     if (warnings && base.solver.rao.method == sk::RaoSolverOptions::Method::kTimeDomainStrip)

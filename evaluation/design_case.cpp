@@ -42,11 +42,15 @@ sk::HullExtent DesignCase::Extent() const {
 
 std::map<std::string, double> DesignCase::Parameters() const {
   const auto& h = hydrostatics;
-  return {{"Fr", speed_m_s / std::sqrt(water.g_m_s2 * h.L_m)},
-          {"Cvp", h.Cvp},
-          {"B_over_T", h.B_m / h.T_m},
-          {"L_over_B", h.L_m / h.B_m},
-          {"L_m", h.L_m}};
+  std::map<std::string, double> p = {{"Fr", speed_m_s / std::sqrt(water.g_m_s2 * h.L_m)},
+                                     {"Cvp", h.Cvp},
+                                     {"B_over_T", h.B_m / h.T_m},
+                                     {"L_over_B", h.L_m / h.B_m},
+                                     {"L_m", h.L_m}};
+  // The attitude the strips were solved at, where it is not the hull at rest.
+  if (solver.steady_flow || !attitude.IsEvenKeel())
+    p["running_sinkage_m"] = attitude.sinkage_m, p["running_trim_deg"] = attitude.trim_deg;
+  return p;
 }
 
 sk::StripKernel BuildDesignKernel(const DesignCase& d) {

@@ -11,6 +11,7 @@
 #include "evaluation/solver_settings.h"
 #include "evaluation/water.h"
 #include "parametric_hull/hydrostatics.h"
+#include "parametric_hull/running_attitude.h"
 #include "seakeeping/motions/rao_solver.h"
 #include "seakeeping/motions/rao_table.h"
 #include "seas/passenger_positions.h"
@@ -20,7 +21,8 @@ namespace hullopt::eval {
 struct DesignCase {
   std::string name;
   hull::HullForm hull;          ///< at rest, even keel: coefficients, mass defaults, Fr, passenger positions
-  hull::HullForm running_hull;  ///< at hull.attitude (= hull at even keel): strips and RAOs
+  hull::HullForm running_hull;  ///< at `attitude` (= hull at even keel): strips and RAOs
+  hull::RunningAttitude attitude;  ///< hull.attitude, or solved in calm water with solver.steady_flow: on
   hull::Hydrostatics hydrostatics;  ///< of `hull` (at rest)
   hull::MassProperties mass;
   /// Plausibility warnings of the hull and mass (parametric_hull/plausibility.h), carried into every RAO
@@ -32,7 +34,8 @@ struct DesignCase {
   bool has_frequencies = false;  ///< solver.frequencies were given
   /// CG-to-transom and CG-to-bow distances for the passenger positions [m].
   sk::HullExtent Extent() const;
-  /// Fr, Cvp, B_over_T, L_over_B, L_m of the main body: axes of the study plots.
+  /// Fr, Cvp, B_over_T, L_over_B, L_m of the main body: axes of the study plots; with a running attitude also
+  /// running_sinkage_m (+ down) and running_trim_deg (+ bow up).
   std::map<std::string, double> Parameters() const;
 };
 

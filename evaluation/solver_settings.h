@@ -18,6 +18,10 @@ struct SolverSettings {
   /// How the strip momentum takes the current sources' potential (time-domain strips, momentum form).
   sk::BodyPotential body_potential = sk::BodyPotential::kSourceSum;
   sk::FrequencySpec frequencies;
+  /// solver.steady_flow: on solves the running sinkage and trim in calm water on the strips
+  /// (seakeeping/motions/calm_water.h) and solves the RAOs on the hull at that attitude; off (default): the
+  /// hull at hull.attitude, even keel unless given.
+  bool steady_flow = false;
   /// How the frequencies (given or default) are refined (solver.adaptive_grid and its caps); on by default.
   AdaptiveGridOptions grid;
   double cs() const { return rao.motion.damping_cs; }

@@ -6,6 +6,7 @@
 
 #include "evaluation/hull_plausibility.h"
 #include "evaluation/input_error.h"
+#include "evaluation/strip_attitude.h"
 #include "parametric_hull/hull_generator.h"
 #include "parametric_hull/plausibility.h"
 
@@ -79,10 +80,10 @@ DesignCase BuildTrialDesign(const DesignBasis& b, const std::vector<const hull::
     if (f.refuse) throw InputError(file + ":?: key 'mass." + f.quantity + "': " + f.message);
     d.input_warnings.push_back(f.message);
   }
-  hull::RunningAttitude a = b.attitude;
-  a.pivot_x_m = defaults.lcg_m_from_ap;
+  d.attitude = b.attitude;
+  d.attitude.pivot_x_m = defaults.lcg_m_from_ap;
   try {
-    d.running_hull = hull::ApplyRunningAttitude(d.hull, a);
+    d.running_hull = hull::ApplyRunningAttitude(d.hull, d.attitude);
   } catch (const std::logic_error& e) {
     throw InputError(file + ": key 'hull.attitude': " + e.what());
   }
@@ -92,6 +93,10 @@ DesignCase BuildTrialDesign(const DesignBasis& b, const std::vector<const hull::
   d.mass.kyy_m = b.kyy_over_L * hs.L_m;
   d.mass.kg_m = b.kg_over_T * hs.T_m;
   d.hydrostatics = hull::ComputeHydrostatics(d.hull, d.water.rho_kg_m3, d.mass.kg_m);
+  if (d.solver.steady_flow) {
+    d.attitude = StripAttitude(d.hull, d.mass, d.speed_m_s, d.water, d.solver, b.attitude, file + ": design '" + name + "'");
+    d.running_hull = hull::ApplyRunningAttitude(d.hull, d.attitude);
+  }
   // The method's validity envelope, as for a design read from a config: a trial beyond a hard limit is not
   // produced (its error is its message), one within is flagged in its row.
   EnvelopeInput env;

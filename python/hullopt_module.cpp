@@ -18,6 +18,7 @@
 #include "app/commands.h"
 #include "evaluation/adaptive_frequency_grid.h"
 #include "evaluation/hull_plausibility.h"
+#include "evaluation/strip_attitude.h"
 #include "evaluation/validity_envelope.h"
 #include "io/config/design_config.h"
 #include "hullopt/hullopt.h"
@@ -27,6 +28,7 @@
 #include "io/config/seas_config.h"
 #include "io/config/water_config.h"
 #include "io/config/yaml_map.h"
+#include "seakeeping/motions/calm_water.h"
 #include "seakeeping/motions/forced_oscillation.h"
 
 namespace py = pybind11;
@@ -282,23 +284,82 @@ PYBIND11_MODULE(_hullopt, m) {
         env.mass = &mass;
         const std::vector<std::string> flags = eval::ApplyEnvelope(eval::CheckEnvelope(env), "hull '" + name + "'");
         sk::RaoTable t;
+        hull::RunningAttitude attitude;
         {
           py::gil_scoped_release release;
+          // solver.steady_flow: on solves the running attitude in calm water first (the hull as given floats at rest).
+          attitude = eval::StripAttitude(h, mass, speed_m_s, w, sc, {}, "hull '" + name + "'");
           // solver.adaptive_grid (on by default): the peaks refined from omega, as `hullopt rao` does.
-          const sk::RaoSweeper sweeper(h, mass, speed_m_s, w.rho_kg_m3, w.g_m_s2, o,
+          const sk::RaoSweeper sweeper(sc.steady_flow ? hull::ApplyRunningAttitude(h, attitude) : h, mass, speed_m_s,
+                                       w.rho_kg_m3, w.g_m_s2, o,
                                        sk::TransientGreenKernelBuilder(sc.sectional_force, sc.body_potential));
           t = eval::SweepAdaptively(sweeper, omega, sc.grid);
         }
         t.warnings.insert(t.warnings.begin(), flags.begin(), flags.end());
-        return RaoDict(t);
+        py::dict d = RaoDict(t);
+        if (sc.steady_flow) d["sinkage_m"] = attitude.sinkage_m, d["trim_deg"] = attitude.trim_deg;
+        return d;
       },
       py::arg("hull"), py::arg("mass"), py::arg("speed_m_s"), py::arg("omega_rad_s"),
       py::arg("solver") = py::none(), py::arg("water") = py::none(), py::arg("name") = "hull",
       "Heave X3/A [m/m] and pitch X5/(kA) [rad/rad] RAOs (complex, phase lead positive relative to the wave "
       "crest at the CG) at wave frequencies omega_rad_s [rad/s] (increasing) and speed speed_m_s [m/s]. "
-      "solver: a dict as a config's solver: block (sections, panels, Cs, method, path, adaptive_grid, ...): "
-      "with adaptive_grid on (the default) omega_rad_s is refined around the RAO peaks. Returns a dict "
-      "of NumPy arrays omega_rad_s, omega_e_rad_s, heave, pitch and a list of warnings.");
+      "solver: a dict as a config's solver: block (sections, panels, Cs, method, path, steady_flow, adaptive_grid, "
+      "...): with adaptive_grid on (the default) omega_rad_s is refined around the RAO peaks. Returns a "
+      "dict of NumPy arrays omega_rad_s, omega_e_rad_s, heave, pitch and a list of warnings (with steady_flow "
+      "'on' also the solved sinkage_m, + down, and trim_deg, + bow up).");
+
+  m.def(
+      "calm_water",
+      [](const hull::HullForm& h, const hull::MassProperties& mass, double speed_m_s, const std::string& sectional_force,
+         int sections, int panels, int body, const py::object& attitude, bool elevation, const py::object& water) {
+        const io::WaterOptions w = WaterOf(water);
+        sk::CalmWaterOptions o;
+        o.elevation = elevation;
+        if (sectional_force != "momentum" && sectional_force != "pressure")
+          throw std::invalid_argument("sectional_force must be 'momentum' or 'pressure', got '" + sectional_force + "'");
+        o.sectional_force = sectional_force == "pressure" ? sk::SectionalForce::kPressure : sk::SectionalForce::kMomentum;
+        o.geometry.sections = sections, o.geometry.panels = panels, o.geometry.body = body;
+        py::dict d;
+        auto force_dict = [&](const sk::SteadyForce& f) {
+          d["heave_N"] = f.heave_N, d["moment_N_m"] = f.moment_N_m;
+          d["hydrodynamic_heave_N"] = f.hydrodynamic_heave_N, d["hydrodynamic_moment_N_m"] = f.hydrodynamic_moment_N_m;
+          d["x_m"] = Array(f.x_m), d["force_N_per_m"] = Array(f.force_N_per_m),
+          d["buoyancy_N_per_m"] = Array(f.buoyancy_N_per_m);
+          if (elevation) d["elevation_outer_m"] = Array(f.elevation_outer_m), d["elevation_inner_m"] = Array(f.elevation_inner_m);
+        };
+        if (!attitude.is_none()) {  // the force at a given (sinkage_m + down, trim_deg + bow up)
+          const auto a = attitude.cast<std::pair<double, double>>();
+          hull::RunningAttitude ra;
+          ra.sinkage_m = a.first, ra.trim_deg = a.second, ra.pivot_x_m = mass.lcg_m_from_ap;
+          sk::SteadyForce f;
+          {
+            py::gil_scoped_release release;
+            f = sk::CalmWaterForce(h, mass, ra, speed_m_s, w.rho_kg_m3, w.g_m_s2, o);
+          }
+          force_dict(f);
+          d["sinkage_m"] = ra.sinkage_m, d["trim_deg"] = ra.trim_deg;
+          return d;
+        }
+        sk::CalmWaterResult r;
+        {
+          py::gil_scoped_release release;
+          r = sk::SolveRunningAttitude(h, mass, speed_m_s, w.rho_kg_m3, w.g_m_s2, o);
+        }
+        force_dict(r.force);
+        d["sinkage_m"] = r.attitude.sinkage_m, d["trim_deg"] = r.attitude.trim_deg;
+        d["converged"] = r.converged, d["iterations"] = r.iterations, d["note"] = r.note;
+        return d;
+      },
+      py::arg("hull"), py::arg("mass"), py::arg("speed_m_s"), py::arg("sectional_force") = "momentum",
+      py::arg("sections") = 40, py::arg("panels") = 14, py::arg("body") = -1, py::arg("attitude") = py::none(),
+      py::arg("elevation") = false, py::arg("water") = py::none(),
+      "Calm water on the strips of the instantaneous hull at speed_m_s [m/s]: the running sinkage_m (+ down, at "
+      "the LCG) and trim_deg (+ bow up) where the steady force and moment vanish, with the steady sectional force "
+      "force_N_per_m along x_m (bow first). attitude=(sinkage_m, trim_deg) gives the steady force at that "
+      "attitude instead of iterating. elevation=True adds elevation_outer_m and elevation_inner_m, the steady "
+      "free-surface elevation at the water line beside each station (+ up; inner: multihulls only). The hull as "
+      "given floats at rest (its weight is its buoyancy at rest).");
 
   m.def(
       "forced_oscillation",

@@ -1,6 +1,7 @@
 #include "io/config/design_config.h"
 
 #include "evaluation/hull_plausibility.h"
+#include "evaluation/strip_attitude.h"
 #include "io/formats/input_error.h"
 #include "io/config/motion_config.h"
 #include "io/config/water_config.h"
@@ -35,8 +36,16 @@ eval::DesignCase LoadDesignCase(YamlMap& root, const std::string& config_file, c
   }
   YamlMap mass_map = root.MapOrEmpty("mass");
   d.mass = ParseMassConfig(mass_map, d.hydrostatics, &d.input_warnings);
-  d.running_hull = ApplyHullAttitude(hull_opts, d.hull, d.mass.lcg_m_from_ap, config_file);
   if (read_speed) d.speed_m_s = speed.MetresPerSecond(d.hydrostatics.L_m, d.water.g_m_s2);
+  if (read_speed && d.solver.steady_flow) {
+    d.attitude = eval::StripAttitude(d.hull, d.mass, d.speed_m_s, d.water, d.solver, hull_opts.attitude,
+                                     config_file + ": design '" + name + "'");
+    d.running_hull = hull::ApplyRunningAttitude(d.hull, d.attitude);
+  } else {
+    d.attitude = hull_opts.attitude;
+    d.attitude.pivot_x_m = d.mass.lcg_m_from_ap;
+    d.running_hull = ApplyHullAttitude(hull_opts, d.hull, d.mass.lcg_m_from_ap, config_file);
+  }
   // The method's validity envelope: refused beyond its hard limits, flagged in every output within them.
   eval::EnvelopeInput env;
   env.rho_kg_m3 = d.water.rho_kg_m3;

@@ -138,6 +138,8 @@ SolverConfig ParseSolverConfig(YamlMap& s, bool frequencies_required) {
   if (c.sectional_force == sk::SectionalForce::kPressure && o.method != Method::kTimeDomainStrip)
     s.Fail("sectional_force", "pressure applies to method: time_domain_strip only (strip_theory_stf has its own "
                               "frequency-domain sectional force)");
+  // Read (and recorded) only when given, so that configs without it resolve as before.
+  if (s.Has("steady_flow")) c.steady_flow = s.Choice("steady_flow", {"on", "off"}, "off") == "on";
   // Read (and recorded) only when given, so that configs without them resolve as before (refinement on).
   if (s.Has("adaptive_grid")) c.grid.enabled = s.Boolean("adaptive_grid", c.grid.enabled);
   if (s.Has("adaptive_grid_max_passes")) {

@@ -6,6 +6,7 @@ One import names the public objects:
     hydrostatics, mass_properties                  displacement, coefficients, GM; mass properties
     compute_raos, evaluation_frequencies           heave and pitch RAOs (time-domain strip method or STF)
     forced_oscillation                             a forced heave or pitch test on the instantaneous hull
+    calm_water                                     the steady force and running sinkage and trim in calm water
     evaluate                                       rms vertical accelerations and MSI in head seas
     load_design, Design                            a design config as `hullopt evaluate` reads it
     run                                            any hullopt command in-process (campaigns)
@@ -24,6 +25,7 @@ from ._hullopt import (  # noqa: F401
     evaluate,
     evaluation_frequencies,
     forced_oscillation,
+    calm_water,
     generate_hull,
     hydrostatics,
     load_design,

@@ -8,7 +8,7 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "parametric_hull/section_geometry.h"
+#include "seakeeping/motions/instantaneous_sections.h"
 #include "seakeeping/motions/rao_solver.h"
 #include "seakeeping/strip/contour_motion.h"
 #include "seakeeping/strip/strip_marcher.h"
@@ -21,26 +21,6 @@ double Ramp(double t, double ramp_s) {
   if (t <= 0.0) return 0.0;
   if (t >= ramp_s) return 1.0;
   return 0.5 * (1.0 - std::cos(M_PI * t / ramp_s));
-}
-
-// Waterline breadth and immersed area of all selected bodies at x and draught T (mirror pairs twice).
-struct SectionSums {
-  double beam_m = 0.0, area_m2 = 0.0;
-};
-SectionSums Sums(const hull::HullForm& hull, double x, double T, const StripGeometryOptions& g) {
-  SectionSums s;
-  for (std::size_t b = 0; b < hull.bodies.size(); ++b) {
-    if (g.body >= 0 && g.body != static_cast<int>(b)) continue;
-    const auto& body = hull.bodies[b];
-    const hull::Station st = hull::InterpolateStation(body, x);
-    if (st.y_m.size() < 2) continue;
-    const auto p = hull::ComputeSectionProperties(st, T);
-    if (!p.wet) continue;
-    const double copies = (g.body < 0 && body.y_centre_m > 0.0) ? 2.0 : 1.0;
-    s.beam_m += copies * 2.0 * p.waterline_half_breadth_m;
-    s.area_m2 += copies * 2.0 * p.area_m2;
-  }
-  return s;
 }
 
 }  // namespace
@@ -81,28 +61,27 @@ ForcedOscillationResult SimulateForcedOscillation(const hull::HullForm& at_rest,
     throw std::invalid_argument("forced oscillation: U, rho and g must be > 0");
   const hull::HullForm hull = hull::ApplyRunningAttitude(at_rest, options.attitude);
   const StripGeometryOptions& geo = options.geometry;
-  // The strip grid of StripKernelGeometry: cell faces from the foremost to the aftmost station of all bodies.
-  double x_aft = std::numeric_limits<double>::infinity(), x_fwd = -x_aft;
-  for (const auto& b : hull.bodies)
-    if (!b.stations.empty()) x_aft = std::min(x_aft, b.stations.front().x_m), x_fwd = std::max(x_fwd, b.stations.back().x_m);
-  if (!(x_fwd > x_aft)) throw std::invalid_argument("forced oscillation: the hull has no length (no stations)");
+  CellFaceStations grid;
+  try {
+    grid = CellFaceGrid(hull, geo.sections);
+  } catch (const std::invalid_argument& e) {
+    throw std::invalid_argument(std::string("forced oscillation: ") + e.what());
+  }
   const int N = geo.sections, steps = N + 1;
-  const double dx = (x_fwd - x_aft) / N, dt = dx / speed_m_s, w = options.omega_e_rad_s, T = hull.draught_m;
+  const double dx = grid.dx_m, dt = dx / speed_m_s, w = options.omega_e_rad_s, T = hull.draught_m;
   if (w * dt > kMaxEncounterStepPhase) {
     std::ostringstream os;
     os << "forced oscillation: omega_e dt = " << w * dt << " > pi/4 (8 strip steps per period): use more sections";
     throw std::domain_error(os.str());
   }
-  std::vector<double> x(steps), weight(steps), lever(steps);
-  for (int n = 0; n < steps; ++n) {
-    x[n] = n == N ? x_aft : x_fwd - n * dx;
-    weight[n] = StationWeight(StationLayout::kCellFaces, n, steps, dx);
-    lever[n] = x[n] - mass.lcg_m_from_ap;
-  }
+  const std::vector<double>& x = grid.x_m;
+  const std::vector<double>& weight = grid.weight_m;
+  std::vector<double> lever(steps);
+  for (int n = 0; n < steps; ++n) lever[n] = x[n] - mass.lcg_m_from_ap;
   // Static restoring of the hull at rest (the strip sums of head_sea_ship_model.h), removed as the tank does.
   double C33 = 0, C35 = 0, C55 = 0;
   for (int n = 0; n < steps; ++n) {
-    const double B = Sums(at_rest, x[n], at_rest.draught_m, geo).beam_m, k = rho_kg_m3 * g_m_s2 * B * weight[n];
+    const double B = WetSectionSums(at_rest, x[n], at_rest.draught_m, geo).beam_m, k = rho_kg_m3 * g_m_s2 * B * weight[n];
     C33 += k, C35 -= k * lever[n], C55 += k * lever[n] * lever[n];
   }
   const bool heave = options.mode == ForcedMode::kHeave;
@@ -197,7 +176,7 @@ ForcedOscillationResult SimulateForcedOscillation(const hull::HullForm& at_rest,
     const double t = j * dt;
     double F3 = 0, F5 = 0;
     for (int n = 0; n < steps; ++n) {
-      const SectionSums sec = Sums(hull, x[n], draught(n, t), geo);
+      const SectionSums sec = WetSectionSums(hull, x[n], draught(n, t), geo);
       const double buoyancy = rho_kg_m3 * g_m_s2 * sec.area_m2;
       const double fn = (f[j - n - s0][n] + buoyancy - damping * sec.beam_m * vertical_velocity(n, t)) * weight[n];
       F3 += fn, F5 -= lever[n] * fn;

@@ -82,6 +82,17 @@ expect_error lifted_out "$(base "{ Fn: 0.75 }" "{ omega_rad_s: [2.0] }" |
   sed 's/spacing_m: 0.70 }/spacing_m: 0.70, attitude: { sinkage_m: -0.02 } }/')" "hull.attitude.*lifted out"
 expect_error big_trim "$(base "{ Fn: 0.75 }" "{ omega_rad_s: [2.0] }" |
   sed 's/spacing_m: 0.70 }/spacing_m: 0.70, attitude: { trim_deg: 7 } }/')" "hull.attitude.trim_deg"
+# solver.steady_flow: off (given) leaves rao.csv byte for byte; on solves the attitude and says so in the
+# header; on together with hull.attitude is refused naming the key.
+sed 's/Cs: 0.024,/Cs: 0.024, steady_flow: off,/' "$tmp/ok.yaml" > "$tmp/sf_off.yaml"
+"$bin" rao "$tmp/sf_off.yaml" --out "$tmp/sf_off" > /dev/null || fail "steady_flow: off refused"
+cmp -s "$tmp/ok/rao.csv" "$tmp/sf_off/rao.csv" || fail "steady_flow: off changed rao.csv"
+sed 's/Cs: 0.024,/Cs: 0.024, steady_flow: on,/' "$tmp/ok.yaml" > "$tmp/sf_on.yaml"
+"$bin" rao "$tmp/sf_on.yaml" --out "$tmp/sf_on" > /dev/null || fail "steady_flow: on refused"
+grep -q "running attitude: sinkage .* (from calm water on the strips" "$tmp/sf_on/rao.csv" ||
+  fail "rao.csv header lacks the solved attitude"
+expect_error steady_and_attitude "$(sed 's/spacing_m: 0.70 }/spacing_m: 0.70, attitude: { trim_deg: 1.0 } }/' "$tmp/sf_on.yaml")" \
+  "solver.steady_flow.*hull.attitude"
 # compare.tank_rao_csv: measured points on rao.svg, the file named relative to the config's folder (run from
 # another working directory); a file without a row at the run's Fn is refused naming its speeds.
 mkdir -p "$tmp/cmp/data"

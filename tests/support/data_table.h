@@ -28,3 +28,33 @@ inline std::vector<std::vector<double>> ReadDataTable(const std::string& relativ
 }
 
 }  // namespace hullopt::test
+
+namespace hullopt::test {
+
+/// A data/ table with its header: the column names and the rows as numbers.
+struct NamedDataTable {
+  std::vector<std::string> names;
+  std::vector<std::vector<double>> rows;
+  /// Index of the column `name`, or -1.
+  int Column(const std::string& name) const {
+    const auto it = std::find(names.begin(), names.end(), name);
+    return it == names.end() ? -1 : static_cast<int>(it - names.begin());
+  }
+};
+
+/// data/<relative_path> as ReadDataTable, with the names of the header row. Empty if the file cannot be opened.
+inline NamedDataTable ReadNamedDataTable(const std::string& relative_path) {
+  NamedDataTable out;
+  out.rows = ReadDataTable(relative_path);
+  std::ifstream in(std::string(HULLOPT_SOURCE_DIR) + "/data/" + relative_path);
+  std::string line;
+  while (in && std::getline(in, line)) {
+    if (line.empty() || line[0] == '#') continue;
+    std::istringstream header(line);
+    for (std::string name; std::getline(header, name, ',');) out.names.push_back(name);
+    break;
+  }
+  return out;
+}
+
+}  // namespace hullopt::test

@@ -20,6 +20,7 @@
 #include "seakeeping/motions/encounter_frequency.h"
 #include "seakeeping/motions/forced_oscillation.h"
 #include "seakeeping/motions/rao_solver.h"
+#include "support/semicircle_hull.h"
 
 namespace sk = hullopt::sk;
 namespace hull = hullopt::hull;
@@ -35,38 +36,12 @@ constexpr double kG = 0.01;
 constexpr int kSections = 80;
 constexpr double kT = 0.2;  // [m] design waterline above the baseline (keel of the full sections at 0.08 m)
 
-enum class Taper { kNone, kAft, kFore };
+using hullopt::test::Taper;
+const hullopt::test::SemicircleHullShape kShape{kL, kR0, kT};
 
-// Radius at x from the AP: 0.1 R0 at the tapered end, linear over that half, R0 elsewhere.
-double Radius(Taper taper, double x) {
-  const double h = 0.5 * kL;
-  if (taper == Taper::kAft && x < h) return kR0 * (0.1 + 0.9 * x / h);
-  if (taper == Taper::kFore && x > h) return kR0 * (0.1 + 0.9 * (kL - x) / h);
-  return kR0;
-}
+double Radius(Taper taper, double x) { return hullopt::test::SemicircleRadius(kShape, taper, x); }
 
-hull::HullForm SemicircleHull(Taper taper) {
-  hull::Demihull b;
-  b.role = "main";
-  constexpr int kStations = 61, kArc = 24;  // linear taper: the strip geometry's interpolation is exact
-  for (int i = 0; i < kStations; ++i) {
-    const double x = kL * i / (kStations - 1), R = Radius(taper, x);
-    hull::Station s{x, {}, {}};
-    for (int k = 0; k <= kArc; ++k) {
-      const double a = -0.5 * M_PI * (1.0 - static_cast<double>(k) / kArc);  // keel −π/2 .. waterline 0
-      s.y_m.push_back(k == 0 ? 0.0 : R * std::cos(a));
-      s.z_m.push_back(kT + R * std::sin(a));
-    }
-    s.y_m.push_back(R), s.z_m.push_back(kT + 0.05);  // wall-sided above the waterline
-    b.stations.push_back(s);
-  }
-  hull::HullForm h;
-  h.type = "monohull";
-  h.draught_m = kT;
-  h.length_m = kL;
-  h.bodies = {b};
-  return h;
-}
+hull::HullForm SemicircleHull(Taper taper) { return hullopt::test::SemicircleHull(kShape, taper); }
 
 struct Closed {
   double b33, b55, b35, b53, a33, a55;

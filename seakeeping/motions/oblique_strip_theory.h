@@ -1,0 +1,148 @@
+#pragma once
+// Zero-speed strip theory in oblique seas for sway, heave, roll, pitch and yaw (Salvesen, Tuck & Faltinsen
+// 1970 with U = 0): each station is a 2D frequency-domain problem (frequency_domain_section.h, modes sway,
+// heave and roll), its coefficients are moved to roll about the centre of gravity and integrated along the
+// hull, the wave excitation is the Froude–Krylov pressure of the oblique wave over the hull (each section's
+// girth and, for pitch and yaw, the longitudinal slope) plus the STF (Haskind) diffraction force, and the 5-dof linear equations give the RAOs. docs/theory.md, "Oblique seas
+// at zero speed", states the formulas.
+//
+// Axes and conventions (the same as the 3D panel-method data in data/peers-oblique/, docs/conventions.md):
+// x forward, y to port, z up, origin on the still waterline; dofs 1 surge, 2 sway (+ to port), 3 heave
+// (+ up), 4 roll (right-handed about x: + starboard down), 5 pitch (right-handed about y: + bow down), 6 yaw
+// (right-handed about z: + bow to port); rotations and moments about the centre of gravity (CG). Heading β:
+// the direction the waves travel, from +x counter-clockwise seen from above (180° head seas, 90° beam seas
+// from starboard, travelling towards +y). Wave elevation Re[A e^{i(ωt − k((x − x_G) cosβ + y sinβ))}], deep
+// water k = ω²/g, so phases are leads over the wave crest at the CG. Time factor e^{iωt}.
+//
+// Not included (hooks): forward speed (the STF U-terms need the sectional coefficients kept per station in
+// ObliqueFrequencyResult::sections and the encounter frequency; options.speed_m_s must be 0 for now), surge
+// (its row and column stay zero and its RAO is not solved, so the surge–pitch coupling A15, B15 is left out:
+// on the slender Wigley hull the pitch RAO still agrees within 3.4 % with a free-surge 3D solve), viscous roll
+// damping (add it to B(3,3) before solving).
+#include <Eigen/Dense>
+#include <array>
+#include <complex>
+#include <string>
+#include <vector>
+
+#include "parametric_hull/hull_form.h"
+#include "seakeeping/green/panel.h"
+#include "seakeeping/sections/frequency_domain_section.h"
+#include "seakeeping/strip/strip_geometry.h"
+
+namespace hullopt::sk {
+
+using Matrix6d = Eigen::Matrix<double, 6, 6>;
+
+/// One strip station: the section at x_m [m, any longitudinal origin, x forward] panelled as
+/// PanelSymmetricSection makes it (port waterline → keel → starboard waterline, z = 0 the still waterline,
+/// y from the centreline, several bodies allowed), standing for weight_m [m] of hull length in the hull
+/// integrals ∫ f dx ≈ Σ weight f. A station with no panels is dry and contributes nothing.
+struct ObliqueStripStation {
+  double x_m = 0.0;
+  double weight_m = 0.0;
+  std::vector<Panel> panels;
+};
+
+/// The stations of a hull on the strip solvers' grid (strip_geometry.h): options.sections cells over the
+/// extreme stations of the bodies, at the cell midpoints or faces (options.layout) with their quadrature
+/// weights, each section cut at the hull's draught and panelled (StripSectionPanels; x from the AP). Throws as
+/// StripKernelGeometry (bad options, no length, draught <= 0, a section not reaching the waterline).
+std::vector<ObliqueStripStation> ObliqueStripStations(const hull::HullForm& hull,
+                                                      const StripGeometryOptions& options);
+
+/// Rigid-body mass: mass [kg], CG (x_g_m in the stations' x, on the centreline, z_g_m from the waterline,
+/// negative below it) and the inertia matrix about the CG [kg m²] in the axes x, y, z (I44 = inertia(0,0),
+/// I55 = (1,1), I66 = (2,2), I46 = −product of inertia = inertia(0,2)).
+struct ObliqueMassProperties {
+  double mass_kg = 0.0;
+  double x_g_m = 0.0;
+  double z_g_m = 0.0;
+  Eigen::Matrix3d inertia_kg_m2 = Eigen::Matrix3d::Zero();
+  bool IsValid(std::string* error) const;
+};
+
+struct ObliqueStripOptions {
+  double rho_kg_m3 = 1025.0;  ///< [kg/m³]
+  double g_m_s2 = 9.81;       ///< [m/s²]
+  /// [m/s] ship speed: only 0 for now (the forward-speed terms are not implemented).
+  double speed_m_s = 0.0;
+  /// Froude–Krylov moment of the incident pressure on the hull's longitudinal slope (the n_x parts of the pitch
+  /// normal (z − z_G) n_x and of the yaw normal −y n_x), from the volume form −∫∫∫ (z − z_G) ∂p/∂x dV section by
+  /// section: with it the long-wave pitch RAO tends to 1; without it (conventional STF, n_x neglected) to
+  /// I_L/(I_L + V(z_B − z_G)). Diffraction and radiation keep the strip normals either way.
+  bool longitudinal_froude_krylov = true;
+  /// Settings of the 2D section solver (its rho and g are replaced by the two above).
+  FrequencyDomainOptions section;
+  bool IsValid(std::string* error) const;
+};
+
+/// Hydrostatics from the stations' panels (each section closed by its waterline): exact for the polygonal
+/// sections, then integrated along x with the station weights.
+struct ObliqueHydrostatics {
+  double volume_m3 = 0.0;
+  double x_b_m = 0.0;                ///< [m] centre of buoyancy, stations' x
+  double z_b_m = 0.0;                ///< [m] from the waterline (negative)
+  double waterplane_area_m2 = 0.0;
+  double x_f_m = 0.0;                ///< [m] centre of flotation, stations' x
+  double waterplane_i_t_m4 = 0.0;    ///< [m⁴] transverse second moment about the centreline
+  double waterplane_i_l_cg_m4 = 0.0; ///< [m⁴] longitudinal second moment about the CG's transverse axis
+};
+ObliqueHydrostatics ObliqueStationHydrostatics(const std::vector<ObliqueStripStation>& stations, double x_g_m);
+
+/// Restoring matrix about the CG (dofs surge..yaw as indices 0..5): C33 = ρg A_wp, C35 = C53 = −ρg A_wp (x_F −
+/// x_G), C44 = ρg (I_T + V (z_B − z_G)) = ρgV GM_T, C55 = ρg (I_L + V (z_B − z_G)); the buoyancy ρgV stands
+/// for the weight (free floating: mass = ρV).
+Matrix6d ObliqueRestoring(const ObliqueHydrostatics& h, double x_g_m, double z_g_m, double rho_kg_m3,
+                           double g_m_s2);
+
+/// Sectional coefficients of one station at one frequency, per unit length, modes sway, heave and roll about
+/// the CG's height (y = 0, z = z_G): a' = T a Tᵀ with the 2D solver's a about y = z = 0 and T the rows (1 0 0;
+/// 0 1 0; z_G 0 1) (the roll normal about z_G is n_4 + z_G n_2).
+struct ObliqueSectionCoefficients {
+  Eigen::Matrix3d added_mass = Eigen::Matrix3d::Zero();  ///< [kg/m, kg, kg m]
+  Eigen::Matrix3d damping = Eigen::Matrix3d::Zero();     ///< [kg/(m s), kg/s, kg m/s]
+};
+
+/// Radiation coefficients at one frequency (indices 0..5 = dofs 1..6 surge..yaw; surge row and column zero).
+struct ObliqueFrequencyResult {
+  double omega_rad_s = 0.0;
+  double k_per_m = 0.0;
+  Matrix6d added_mass = Matrix6d::Zero();  ///< A_jk: force j per unit acceleration of k, about the CG
+  Matrix6d damping = Matrix6d::Zero();     ///< B_jk
+  std::vector<ObliqueSectionCoefficients> sections;  ///< per station (zero for dry stations)
+};
+
+/// Wave excitation and motions at one (heading, frequency), per unit wave amplitude A (indices 0..5 = dofs
+/// 1..6; surge stays zero). Forces [N/m], moments [N m/m]; rao: translations per A [m/m], rotations per
+/// wave slope kA [rad/rad].
+struct ObliqueWaveResult {
+  double heading_deg = 0.0;
+  double omega_rad_s = 0.0;
+  std::array<std::complex<double>, 6> froude_krylov{};
+  std::array<std::complex<double>, 6> diffraction{};
+  std::array<std::complex<double>, 6> excitation{};
+  std::array<std::complex<double>, 6> rao{};
+};
+
+struct ObliqueStripResult {
+  ObliqueHydrostatics hydrostatics;
+  Matrix6d mass = Matrix6d::Zero();       ///< about the CG
+  Matrix6d restoring = Matrix6d::Zero();  ///< ObliqueRestoring
+  std::vector<double> headings_deg;
+  std::vector<ObliqueFrequencyResult> frequencies;  ///< one per ω, input order
+  std::vector<ObliqueWaveResult> waves;             ///< heading-major: waves[h * frequencies.size() + f]
+  const ObliqueWaveResult& Wave(std::size_t heading, std::size_t frequency) const {
+    return waves.at(heading * frequencies.size() + frequency);
+  }
+};
+
+/// The zero-speed strip-theory solution at every ω (> 0) and heading (degrees, any). Throws
+/// std::invalid_argument for invalid options or mass, an empty frequency list or no wet station.
+ObliqueStripResult SolveObliqueStripTheory(const std::vector<ObliqueStripStation>& stations,
+                                           const ObliqueMassProperties& mass,
+                                           const std::vector<double>& omega_rad_s,
+                                           const std::vector<double>& headings_deg,
+                                           const ObliqueStripOptions& options);
+
+}  // namespace hullopt::sk

@@ -1,0 +1,38 @@
+#pragma once
+// The Wigley hull of data/peers-oblique/ (L 3 m, B 0.3 m, T 0.1875 m) as oblique-strip-theory stations, and
+// its mass properties there, for the oblique-sea tests.
+#include <cmath>
+#include <vector>
+
+#include "seakeeping/motions/oblique_strip_theory.h"
+#include "seakeeping/strip/strip_geometry.h"
+#include "support/wigley_hull.h"
+
+namespace hullopt::test {
+
+constexpr double kWigleyL = 3.0, kWigleyB = 0.3, kWigleyT = 0.1875;
+
+/// `sections` stations at the cell midpoints of the hull's length (weight L/sections each), panelled with
+/// `panels` panels per section by the strip solvers' own route (sk::ObliqueStripStations). x from the aft
+/// perpendicular, so midships is x = L/2.
+inline std::vector<sk::ObliqueStripStation> WigleyObliqueStations(int sections, int panels) {
+  sk::StripGeometryOptions o;
+  o.sections = sections;
+  o.panels = panels;
+  o.layout = sk::StationLayout::kCellMidpoints;
+  return sk::ObliqueStripStations(WigleyHull(kWigleyL, kWigleyB, kWigleyT, 201, 61), o);
+}
+
+/// The data's mass: 75 kg (the displaced mass at ρ = 1000), CG at midships, z_G = KG − T; I44 = m (0.35 B)²,
+/// I55 = I66 = m (0.25 L)² (data/peers-oblique/SOURCE.md).
+inline sk::ObliqueMassProperties WigleyObliqueMass(double kg_m) {
+  sk::ObliqueMassProperties m;
+  m.mass_kg = 75.0;
+  m.x_g_m = 0.5 * kWigleyL;
+  m.z_g_m = kg_m - kWigleyT;
+  m.inertia_kg_m2.diagonal() << 75.0 * std::pow(0.35 * kWigleyB, 2), 75.0 * std::pow(0.25 * kWigleyL, 2),
+      75.0 * std::pow(0.25 * kWigleyL, 2);
+  return m;
+}
+
+}  // namespace hullopt::test
