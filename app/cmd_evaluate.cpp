@@ -103,9 +103,14 @@ void LoadComputedDesign(io::YamlMap& root, const std::string& file, DesignInput*
   SetComputedDesign(dc, root.resolved(), file, "evaluate: design '" + in->design.name + "'", cs_override, in);
 }
 
-void ComputePendingRaos(std::vector<DesignInput>* inputs) {
-  for (auto& in : *inputs)
-    if (in.computed) in.design.rao = eval::ComputeDesignRaos(*in.computed, in.omega_rad_s, in.cs_override);
+// The seas and points refine each computed design's grid (solver.adaptive_grid) until its MSI converges.
+void ComputePendingRaos(const std::vector<sk::WaveSpectrum>& spectra, const std::vector<sk::PassengerPosition>& points,
+                        const sk::EvaluationOptions& options, std::vector<DesignInput>* inputs) {
+  for (auto& in : *inputs) {
+    if (!in.computed) continue;
+    const eval::GridSeas seas{spectra, in.design.hull, points, options};
+    in.design.rao = eval::ComputeDesignRaos(*in.computed, in.omega_rad_s, in.cs_override, &seas);
+  }
 }
 
 DesignInput ReadDesign(io::YamlMap& m, double g, bool single) {
@@ -251,10 +256,10 @@ void Run(const std::string& config_file, const std::string& out_dir) {
         throw io::InputError(positions.Where("points") + ": design '" + in.design.name + "': " + error);
     }
   }
-  ComputePendingRaos(&inputs);  // the strip work, once everything has been read and checked
+  const std::vector<sk::WaveSpectrum> spectra = sk::BuildSpectra(seas);
+  ComputePendingRaos(spectra, points, options, &inputs);  // the strip work, once everything has been read and checked
 
   std::vector<io::EvaluatedDesign> designs;
-  const std::vector<sk::WaveSpectrum> spectra = sk::BuildSpectra(seas);
   for (auto& in : inputs) {
     try {
       in.design.evaluation = sk::EvaluateDesign(in.design.rao, in.design.hull, spectra, points, options);

@@ -8,6 +8,7 @@
 #include "app/commands.h"
 #include "app/output_dir.h"
 #include "app/run_checks.h"
+#include "evaluation/adaptive_frequency_grid.h"
 #include "evaluation/hull_plausibility.h"
 #include "evaluation/strip_attitude.h"
 #include "io/config/design_config.h"
@@ -94,7 +95,9 @@ void RunRao(const std::string& config_file, const std::string& out_dir) {
   CheckRunCost("rao", io::StripWorkFromResolved(root.resolved(), static_cast<long>(omega.size())));
   sk::RaoTable t;
   try {
-    t = sk::ComputeRaos(running, mass, U, water.rho_kg_m3, water.g_m_s2, omega, o, builder);
+    // solver.adaptive_grid (on by default): the peaks refined from the given grid, the kernel built once.
+    const sk::RaoSweeper sweeper(running, mass, U, water.rho_kg_m3, water.g_m_s2, o, builder);
+    t = eval::SweepAdaptively(sweeper, omega, sc.grid);
   } catch (const std::domain_error& e) {
     throw io::InputError(std::string("cannot compute RAOs: ") + e.what());
   } catch (const std::invalid_argument& e) {

@@ -34,8 +34,9 @@ SingleDesign EvaluateSingleDesign(io::YamlMap& root, const std::string& name, co
   if (before_work) before_work();
   const std::vector<double> omega = eval::SeaFrequencies(s.design);
   CheckRunCost(command, io::StripWorkFromResolved(root.resolved(), static_cast<long>(omega.size())));
-  d.rao = eval::ComputeDesignRaos(s.design, omega);
   s.spectra = sk::BuildSpectra(seas);
+  const eval::GridSeas grid_seas{s.spectra, d.hull, s.points, s.options};
+  d.rao = eval::ComputeDesignRaos(s.design, omega, -1.0, &grid_seas);
   try {
     d.evaluation = sk::EvaluateDesign(d.rao, d.hull, s.spectra, s.points, s.options);
   } catch (const std::exception& e) {

@@ -4,6 +4,7 @@
 // calm-water resistance. What the whole costs beyond the sum of the phases is the machinery around the physics
 // (setting up the trial design, copies, checks, messages). BM_TrialDesignSetup times that set-up on its own.
 //   build/bench/bench_campaign_evaluation --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
+// BM_DesignRaosAndMsi/0 and /1: the RAOs and MSI of the start design on the fixed and on the adaptive grid.
 #include <benchmark/benchmark.h>
 
 #include <memory>
@@ -105,6 +106,23 @@ static void BM_SeasAndMsi(benchmark::State& state) {
   for (auto _ : state) benchmark::DoNotOptimize(sk::EvaluateDesign(rao, d.Extent(), spectra, {}, {}));
 }
 BENCHMARK(BM_SeasAndMsi)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+// One design's RAOs and MSI in the campaign's seas: the strip kernel, the sweep and the seas, on the fixed
+// default grid (/0, solver.adaptive_grid: off) and refined until the peaks and the MSI converge (/1, the default).
+static void BM_DesignRaosAndMsi(benchmark::State& state) {
+  eval::DesignCase d = Design();
+  d.solver.grid.enabled = state.range(0) != 0;
+  io::YamlMap root = io::YamlMap::LoadFile(kConfig);
+  const eval::GridSeas seas{sk::BuildSpectra(io::ReadSeas(root)), d.Extent(), {}, {}};
+  std::size_t count = 0;
+  for (auto _ : state) {
+    const sk::RaoTable rao = eval::ComputeDesignRaos(d, eval::SeaFrequencies(d), -1.0, &seas);
+    benchmark::DoNotOptimize(sk::EvaluateDesign(rao, d.Extent(), seas.spectra, {}, {}));
+    count = rao.omega_rad_s.size();
+  }
+  state.counters["frequencies"] = static_cast<double>(count);
+}
+BENCHMARK(BM_DesignRaosAndMsi)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 static void BM_CalmWaterResistance(benchmark::State& state) {
   const eval::DesignCase& d = Design();

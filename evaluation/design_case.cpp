@@ -81,11 +81,19 @@ sk::RaoTable DesignRaosFromKernel(const DesignCase& d, const sk::StripKernel& ke
 }
 
 sk::RaoTable ComputeDesignRaos(const DesignCase& d, const std::vector<double>& omega_rad_s,
-                               double cs_override) {
+                               double cs_override, const GridSeas* seas) {
   const double cs = cs_override >= 0.0 ? cs_override : d.solver.cs();
   return Guard(d, [&] {
-    sk::RaoTable t = sk::ComputeRaos(d.running_hull, d.mass, d.speed_m_s, d.water.rho_kg_m3, d.water.g_m_s2, omega_rad_s,
-                                     SolverOptions(d, cs), sk::TransientGreenKernelBuilder(d.solver.sectional_force, d.solver.body_potential));
+    sk::RaoTable t;
+    if (!d.solver.grid.enabled) {
+      t = sk::ComputeRaos(d.running_hull, d.mass, d.speed_m_s, d.water.rho_kg_m3, d.water.g_m_s2, omega_rad_s,
+                          SolverOptions(d, cs), sk::TransientGreenKernelBuilder(d.solver.sectional_force, d.solver.body_potential));
+    } else {
+      const sk::RaoSweeper sweeper(d.running_hull, d.mass, d.speed_m_s, d.water.rho_kg_m3, d.water.g_m_s2,
+                                   SolverOptions(d, cs),
+                                   sk::TransientGreenKernelBuilder(d.solver.sectional_force, d.solver.body_potential));
+      t = SweepAdaptively(sweeper, omega_rad_s, d.solver.grid, seas);
+    }
     t.warnings.insert(t.warnings.begin(), d.input_warnings.begin(), d.input_warnings.end());
     AddValidityWarnings(d, &t);
     // What the generator changed to build the hull goes with every result of it.

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "evaluation/adaptive_frequency_grid.h"
 #include "evaluation/solver_settings.h"
 #include "evaluation/water.h"
 #include "parametric_hull/hydrostatics.h"
@@ -40,10 +41,12 @@ struct DesignCase {
 
 /// RAOs of the design at wave frequencies omega_rad_s (increasing, > 0) by its solver method: the
 /// time-domain strip method (transient Green-function kernel) or conventional strip theory. Cs overrides the
-/// design's when >= 0. Throws InputError naming the design for a hull that cannot be solved or non-finite
-/// results.
+/// design's when >= 0. With design.solver.grid.enabled (solver.adaptive_grid, on by default) omega_rad_s is
+/// the starting grid, refined until the RAO peaks and the MSI and accelerations of `seas` (if given) converge
+/// (evaluation/adaptive_frequency_grid.h; the strip kernel is built once); off: exactly omega_rad_s. Throws
+/// InputError naming the design for a hull that cannot be solved or non-finite results.
 sk::RaoTable ComputeDesignRaos(const DesignCase& design, const std::vector<double>& omega_rad_s,
-                               double cs_override = -1.0);
+                               double cs_override = -1.0, const GridSeas* seas = nullptr);
 
 /// The heave–pitch coefficients of the design at wave frequencies omega_rad_s by its solver method
 /// (sk::ComputeCoefficients: the same strips as ComputeDesignRaos). Throws InputError naming the design

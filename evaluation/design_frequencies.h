@@ -7,6 +7,8 @@
 //          frequency unit, in encounter frequency where high-speed head-sea heave and pitch peak
 //          (λ/L 1.5 to 3), divided by dω_e/dω there, so that the peak in ω_e is sampled ~10 times across (an undamped SWATH peak, Cs 0, is not);
 //   count  (range / step) + 1, within [60, 400].
+// With solver.adaptive_grid on (the default) this is the starting grid that evaluation/adaptive_frequency_grid.h
+// refines until the RAO peaks (a Cs-0 SWATH's too) and the MSI converge.
 #include "seakeeping/motions/frequency_list.h"
 
 namespace hullopt::eval {

@@ -16,6 +16,7 @@ sk::ResolutionCheck CheckDesignResolution(const DesignCase& design, const sk::Ra
   DesignCase fine = design;
   fine.solver.rao.sections *= factor;
   fine.solver.rao.panels *= factor;
+  fine.solver.grid.enabled = false;  // the coarse table's own (possibly refined) grid, so the two compare
   if (fine.solver.rao.sections > kMaxCheckSections || fine.solver.rao.panels > kMaxCheckPanels)
     throw InputError("design '" + design.name + "': resolution_check.factor " + std::to_string(factor) +
                      " asks for " + std::to_string(fine.solver.rao.sections) + " sections x " +

@@ -18,7 +18,15 @@ const std::vector<std::string> kQuantities = {"L_m", "B_m",  "T_m",  "B_overall_
 class MsiEvaluator : public opt::Evaluator, public ResolutionCheckable {
  public:
   MsiEvaluator(DesignBasis basis, std::vector<const hull::DesignVariableField*> fields, MsiObjectiveOptions o)
-      : basis_(std::move(basis)), fields_(std::move(fields)), o_(std::move(o)), spectra_(sk::BuildSpectra(o_.seas)) {}
+      : basis_(std::move(basis)), fields_(std::move(fields)), o_(std::move(o)), spectra_(sk::BuildSpectra(o_.seas)) {
+    if (!IsOperability()) {
+      grid_spectra_ = spectra_;
+      return;
+    }
+    std::vector<sk::SeaState> cells;
+    for (std::size_t i = 0; i < o_.diagram.cells.size(); ++i) cells.push_back(o_.diagram.Sea(i));
+    grid_spectra_ = sk::BuildSpectra(cells);
+  }
 
   opt::EvalResult Evaluate(const std::vector<double>& x) override {
     opt::EvalResult r;
@@ -34,7 +42,7 @@ class MsiEvaluator : public opt::Evaluator, public ResolutionCheckable {
     sk::DesignEvaluation ev;
     sk::OperabilityResult op;
     try {  // a non-finite RAO or response is refused where it is computed: this design is not produced
-      rao = ComputeDesignRaos(d, SeaFrequencies(d));
+      rao = DesignRaos(d);
       if (IsOperability())
         op = sk::EvaluateOperability(rao, d.Extent(), o_.diagram, o_.criteria, {}, o_.evaluation);
       else
@@ -89,7 +97,7 @@ class MsiEvaluator : public opt::Evaluator, public ResolutionCheckable {
   sk::ResolutionCheck CheckResolution(const std::vector<double>& x, int factor,
                                       const sk::ResolutionCheckOptions& options) override {
     const DesignCase d = BuildTrialDesign(basis_, fields_, x);
-    const sk::RaoTable rao = ComputeDesignRaos(d, SeaFrequencies(d));
+    const sk::RaoTable rao = DesignRaos(d);
     sk::DesignEvaluation ev;
     try {
       ev = sk::EvaluateDesign(rao, d.Extent(), spectra_, {}, o_.evaluation);
@@ -156,11 +164,18 @@ class MsiEvaluator : public opt::Evaluator, public ResolutionCheckable {
   }
   using Measure = MsiObjectiveOptions::Measure;
   static constexpr const char* kPositionNames[] = {"forward", "LCG", "transom"};
+  // The design's RAOs on its grid, refined (solver.adaptive_grid) until the MSI of the objective's seas (or
+  // scatter cells) converges.
+  sk::RaoTable DesignRaos(const DesignCase& d) const {
+    const GridSeas seas{grid_spectra_, d.Extent(), {}, o_.evaluation};
+    return ComputeDesignRaos(d, SeaFrequencies(d), -1.0, &seas);
+  }
   bool IsOperability() const { return o_.measure == Measure::kScatterMsi || o_.measure == Measure::kDowntime; }
   DesignBasis basis_;
   std::vector<const hull::DesignVariableField*> fields_;
   MsiObjectiveOptions o_;
   std::vector<sk::WaveSpectrum> spectra_;
+  std::vector<sk::WaveSpectrum> grid_spectra_;  // what the frequency grid must resolve: the seas or the cells
 };
 
 }  // namespace

@@ -4,6 +4,7 @@
 // picks the kernel builder, and the wave frequencies a config may give.
 #include <string>
 
+#include "evaluation/adaptive_frequency_grid.h"
 #include "seakeeping/motions/frequency_list.h"
 #include "seakeeping/motions/rao_solver.h"
 #include "seakeeping/strip/strip_operators.h"
@@ -21,6 +22,8 @@ struct SolverSettings {
   /// (seakeeping/motions/calm_water.h) and solves the RAOs on the hull at that attitude; off (default): the
   /// hull at hull.attitude, even keel unless given.
   bool steady_flow = false;
+  /// How the frequencies (given or default) are refined (solver.adaptive_grid and its caps); on by default.
+  AdaptiveGridOptions grid;
   double cs() const { return rao.motion.damping_cs; }
 };
 

@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "app/commands.h"
+#include "evaluation/adaptive_frequency_grid.h"
 #include "evaluation/hull_plausibility.h"
 #include "evaluation/strip_attitude.h"
 #include "evaluation/validity_envelope.h"
@@ -288,9 +289,11 @@ PYBIND11_MODULE(_hullopt, m) {
           py::gil_scoped_release release;
           // solver.steady_flow: on solves the running attitude in calm water first (the hull as given floats at rest).
           attitude = eval::StripAttitude(h, mass, speed_m_s, w, sc, {}, "hull '" + name + "'");
-          t = sk::ComputeRaos(sc.steady_flow ? hull::ApplyRunningAttitude(h, attitude) : h, mass, speed_m_s,
-                              w.rho_kg_m3, w.g_m_s2, omega, o,
-                              sk::TransientGreenKernelBuilder(sc.sectional_force, sc.body_potential));
+          // solver.adaptive_grid (on by default): the peaks refined from omega, as `hullopt rao` does.
+          const sk::RaoSweeper sweeper(sc.steady_flow ? hull::ApplyRunningAttitude(h, attitude) : h, mass, speed_m_s,
+                                       w.rho_kg_m3, w.g_m_s2, o,
+                                       sk::TransientGreenKernelBuilder(sc.sectional_force, sc.body_potential));
+          t = eval::SweepAdaptively(sweeper, omega, sc.grid);
         }
         t.warnings.insert(t.warnings.begin(), flags.begin(), flags.end());
         py::dict d = RaoDict(t);
@@ -301,7 +304,8 @@ PYBIND11_MODULE(_hullopt, m) {
       py::arg("solver") = py::none(), py::arg("water") = py::none(), py::arg("name") = "hull",
       "Heave X3/A [m/m] and pitch X5/(kA) [rad/rad] RAOs (complex, phase lead positive relative to the wave "
       "crest at the CG) at wave frequencies omega_rad_s [rad/s] (increasing) and speed speed_m_s [m/s]. "
-      "solver: a dict as a config's solver: block (sections, panels, Cs, method, path, steady_flow, ...). Returns a "
+      "solver: a dict as a config's solver: block (sections, panels, Cs, method, path, steady_flow, adaptive_grid, "
+      "...): with adaptive_grid on (the default) omega_rad_s is refined around the RAO peaks. Returns a "
       "dict of NumPy arrays omega_rad_s, omega_e_rad_s, heave, pitch and a list of warnings (with steady_flow "
       "'on' also the solved sinkage_m, + down, and trim_deg, + bow up).");
 
@@ -473,7 +477,8 @@ PYBIND11_MODULE(_hullopt, m) {
           },
           py::arg("omega_rad_s") = py::none(),
           "RAOs (as compute_raos) at omega_rad_s [rad/s], by default the grid of `hullopt evaluate`: the "
-          "config's solver.frequencies, else the evaluation grid.");
+          "config's solver.frequencies, else the evaluation grid; with solver.adaptive_grid on (the default) "
+          "that grid refined around the RAO peaks.");
 
   m.def(
       "load_design",

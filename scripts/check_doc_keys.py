@@ -50,15 +50,17 @@ READ_WHEN_PRESENT = {
     "hull": ["mass.kyy_over_L", "mass.kg_over_T"],
     "design": ["solver.time_scheme", "mass.kyy_over_L", "mass.kg_over_T"],
 }
-# solver.panel_spacing, solver.section_formulation, solver.body_potential and solver.steady_flow are read only when given, by every
-# command with a solver
-# block.
+# solver.panel_spacing, solver.section_formulation, solver.body_potential, solver.steady_flow and
+# solver.adaptive_grid* are read only when given, by every command with a solver block.
 for _c in ("rao", "coefficients", "evaluate", "optimize", "explore", "calibrate", "design"):
     READ_WHEN_PRESENT[_c] = READ_WHEN_PRESENT.get(_c, []) + ["solver.panel_spacing.end_spacing",
                                                               "solver.panel_spacing.grading",
                                                               "solver.section_formulation",
                                                               "solver.body_potential",
-                                                              "solver.steady_flow"]
+                                                              "solver.steady_flow",
+                                                              "solver.adaptive_grid",
+                                                              "solver.adaptive_grid_max_passes",
+                                                              "solver.adaptive_grid_max_frequencies"]
 
 
 # Keys that once appeared in the documentation and that every command refuses.

@@ -140,6 +140,17 @@ SolverConfig ParseSolverConfig(YamlMap& s, bool frequencies_required) {
                               "frequency-domain sectional force)");
   // Read (and recorded) only when given, so that configs without it resolve as before.
   if (s.Has("steady_flow")) c.steady_flow = s.Choice("steady_flow", {"on", "off"}, "off") == "on";
+  // Read (and recorded) only when given, so that configs without them resolve as before (refinement on).
+  if (s.Has("adaptive_grid")) c.grid.enabled = s.Boolean("adaptive_grid", c.grid.enabled);
+  if (s.Has("adaptive_grid_max_passes")) {
+    c.grid.max_passes = s.Integer("adaptive_grid_max_passes", c.grid.max_passes);
+    if (c.grid.max_passes < 1 || c.grid.max_passes > 50) s.Fail("adaptive_grid_max_passes", "must lie in [1, 50]");
+  }
+  if (s.Has("adaptive_grid_max_frequencies")) {
+    c.grid.max_frequencies = s.Integer("adaptive_grid_max_frequencies", c.grid.max_frequencies);
+    if (c.grid.max_frequencies < 3 || c.grid.max_frequencies > kMaxFrequencies)
+      s.Fail("adaptive_grid_max_frequencies", "must lie in [3, " + std::to_string(kMaxFrequencies) + "]");
+  }
   if (frequencies_required || s.Has("frequencies")) {
     auto f = s.Map("frequencies");
     c.frequencies = ParseFrequencies(f);

@@ -14,6 +14,9 @@
 //   interaction: true                # multihull bodies share the strips (false: one demihull alone)
 //   stations: cell_faces             # | cell_midpoints: where the strip steps sit (docs/ship-motions.md)
 //   sectional_force: momentum        # | pressure: the reference paper's written form (docs/theory.md)
+//   adaptive_grid: on                # | off: refine the frequencies until the RAO peaks and the MSI converge
+//   adaptive_grid_max_passes: 6      # refinement passes at most (1 to 50)
+//   adaptive_grid_max_frequencies: 400  # frequencies in the refined grid at most (3 to 1000)
 //   frequencies: { lambda_over_L: [0.6, 0.8, 1.0] }   # or omega_rad_s / omega_e_rad_s lists, or
 //                { range: { quantity: omega_e_rad_s, from: 2.0, to: 12.0, count: 60 } }
 // mass:                              # defaults from the hull's hydrostatics

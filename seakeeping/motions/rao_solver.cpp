@@ -70,34 +70,63 @@ StripKernel BuildHullStripKernel(const hull::HullForm& hull, const RaoSolverOpti
   return CombineIndependentKernels(parts);
 }
 
-RaoTable ComputeRaos(const hull::HullForm& hull, const hull::MassProperties& mass, double speed_m_s,
-                     double rho_kg_m3, double g_m_s2, const std::vector<double>& omega_rad_s,
-                     const RaoSolverOptions& options, const StripKernelBuilder& builder) {
+struct RaoSweeper::State {
+  RaoSolverOptions options;
+  StripKernel kernel;  // strip theory: the geometry only
+  std::unique_ptr<HeadSeaShipModel> model;
+  SectionRowProvider rows;  // strip theory only
+};
+
+RaoSweeper::RaoSweeper(const hull::HullForm& hull, const hull::MassProperties& mass, double speed_m_s,
+                       double rho_kg_m3, double g_m_s2, const RaoSolverOptions& options,
+                       const StripKernelBuilder& builder)
+    : s_(std::make_unique<State>()) {
+  s_->options = options;
   if (options.method == RaoSolverOptions::Method::kStripTheory) {
     std::string err;
     if (!options.IsValid(&err)) throw std::invalid_argument(err);
     StripGeometryOptions g = options.Geometry();  // the same strip stations as the time-domain method
-    const StripKernel geometry = StripKernelGeometry(hull, g, speed_m_s, rho_kg_m3, g_m_s2);
-    const HeadSeaShipModel model(geometry, mass, options.motion);
-    RaoTable t = SolveStripTheoryRaos(model, omega_rad_s,
-                                      FrequencyDomainSectionRows(geometry, options.panels, options.interaction,
-                                                                 options.section_formulation));
-    RequireFiniteRaos(t);
-    t.warnings = RaoResonanceWarnings(t);
-    return t;
+    s_->kernel = StripKernelGeometry(hull, g, speed_m_s, rho_kg_m3, g_m_s2);
+    s_->model = std::make_unique<HeadSeaShipModel>(s_->kernel, mass, options.motion);
+    s_->rows = FrequencyDomainSectionRows(s_->kernel, options.panels, options.interaction,
+                                          options.section_formulation);
+    return;
   }
-  const StripKernel kernel = BuildHullStripKernel(hull, options, speed_m_s, rho_kg_m3, g_m_s2, builder);
-  const HeadSeaShipModel model(kernel, mass, options.motion);
+  s_->kernel = BuildHullStripKernel(hull, options, speed_m_s, rho_kg_m3, g_m_s2, builder);
+  s_->model = std::make_unique<HeadSeaShipModel>(s_->kernel, mass, options.motion);
+}
+
+RaoSweeper::~RaoSweeper() = default;
+RaoSweeper::RaoSweeper(RaoSweeper&&) noexcept = default;
+RaoSweeper& RaoSweeper::operator=(RaoSweeper&&) noexcept = default;
+
+RaoTable RaoSweeper::Solve(const std::vector<double>& omega_rad_s) const {
   RaoTable t;
-  if (options.path == RaoSolverOptions::Path::kPeriodic) {
-    t = SolvePeriodicRaos(model, omega_rad_s);
+  if (s_->options.method == RaoSolverOptions::Method::kStripTheory) {
+    t = SolveStripTheoryRaos(*s_->model, omega_rad_s, s_->rows);
+  } else if (s_->options.path == RaoSolverOptions::Path::kPeriodic) {
+    t = SolvePeriodicRaos(*s_->model, omega_rad_s);
   } else {
-    KernelStripForceModel forces(kernel);
-    t = SolveMarchingRaos(model, forces, omega_rad_s, options.marching);
+    KernelStripForceModel forces(s_->kernel);
+    t = SolveMarchingRaos(*s_->model, forces, omega_rad_s, s_->options.marching);
   }
   RequireFiniteRaos(t);
-  t.warnings = StripKernelWarnings(kernel);
-  for (const auto& w : RaoResonanceWarnings(t)) t.warnings.push_back(w);
+  return t;
+}
+
+std::vector<std::string> RaoSweeper::Warnings(const RaoTable& t, const std::string& advice) const {
+  std::vector<std::string> w;
+  if (s_->options.method != RaoSolverOptions::Method::kStripTheory) w = StripKernelWarnings(s_->kernel);
+  for (auto& r : RaoResonanceWarnings(t, advice)) w.push_back(std::move(r));
+  return w;
+}
+
+RaoTable ComputeRaos(const hull::HullForm& hull, const hull::MassProperties& mass, double speed_m_s,
+                     double rho_kg_m3, double g_m_s2, const std::vector<double>& omega_rad_s,
+                     const RaoSolverOptions& options, const StripKernelBuilder& builder) {
+  const RaoSweeper sweeper(hull, mass, speed_m_s, rho_kg_m3, g_m_s2, options, builder);
+  RaoTable t = sweeper.Solve(omega_rad_s);
+  t.warnings = sweeper.Warnings(t, kGridAdvice);
   return t;
 }
 

@@ -4,6 +4,7 @@
 // Green-function kernel, or the impulsive stand-in) → periodic steady state (2b) or time marching (2a).
 // Multihull bodies either share the strips (interaction) or are solved one body at a time and added.
 #include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -52,6 +53,29 @@ struct RaoSolverOptions {
 StripKernel BuildHullStripKernel(const hull::HullForm& hull, const RaoSolverOptions& options,
                                  double speed_m_s, double rho_kg_m3, double g_m_s2,
                                  const StripKernelBuilder& builder);
+
+/// The RAO solver with its frequency-independent set-up done once (the strip kernel of the time-domain strip
+/// method, or strip theory's strip geometry and 2D section set-up), so that an adaptive frequency grid solves
+/// the frequencies it inserts without rebuilding it. Solve(ω) gives what ComputeRaos gives for the same ω,
+/// bitwise, without the warnings (Warnings() adds them for a table).
+class RaoSweeper {
+ public:
+  /// Throws as ComputeRaos does for bad options or a hull that cannot be solved.
+  RaoSweeper(const hull::HullForm& hull, const hull::MassProperties& mass, double speed_m_s, double rho_kg_m3,
+             double g_m_s2, const RaoSolverOptions& options, const StripKernelBuilder& builder);
+  ~RaoSweeper();
+  RaoSweeper(RaoSweeper&&) noexcept;
+  RaoSweeper& operator=(RaoSweeper&&) noexcept;
+  /// RAOs at omega_rad_s (increasing, > 0), checked finite (std::domain_error naming the frequency); no warnings.
+  RaoTable Solve(const std::vector<double>& omega_rad_s) const;
+  /// The warnings ComputeRaos attaches to `table`: the kernel's (time-domain strip method) and the resonance
+  /// warnings of the table (rao_checks.h) with the given advice.
+  std::vector<std::string> Warnings(const RaoTable& table, const std::string& advice) const;
+
+ private:
+  struct State;
+  std::unique_ptr<State> s_;
+};
 
 /// RAOs at the wave frequencies omega_rad_s (increasing, > 0), with StripKernelWarnings in `warnings`. Throws std::invalid_argument for bad options,
 /// speed or frequencies, std::domain_error for a hull that cannot be solved or non-finite results (naming the

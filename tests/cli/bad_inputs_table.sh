@@ -267,7 +267,7 @@ run draught_huge 1 "key 'hull.draught_m' = 1e300: is not a hull dimension" - -- 
 DESC='`displacement_t: 1e12`'
 w disp "hull: { parametric: { type: catamaran, displacement_t: 1e12, L_over_B: 11, B_over_T: 2, Cb: 0.4, Cp: 0.69, Cwp: 0.76, LCB_pct_L: 0, LCF_pct_L: 0 } }"
 run displacement_huge 1 "must be <= 1e7 t" - -- hull "$T/disp.yaml" --out "$T/o50"
-DESC='Table 1 SW1 SWATH: a 9 m/m heave resonance (warning case)'
+DESC='Table 1 SW1 SWATH: an 11 m/m heave resonance (warning case)'
 { sed -n '/^hull:/,/^speed:/p' configs/davis-holloway-2003/hull09_SW1.yaml
   echo "solver: { sections: 20, panels: 8, frequencies: { range: { quantity: lambda_over_L, from: 0.5, to: 4, count: 30 } } }"; } > "$T/sw1.yaml"
 run sw1_resonance 0 "heave RAO peaks at" "{T}/o51/rao.csv" -- rao "$T/sw1.yaml" --out "$T/o51"

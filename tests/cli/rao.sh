@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
 # hullopt rao end to end: rao.csv with the contract header, and one-line errors with a non-zero exit for bad
-# input (zero or negative speed, empty or negative frequency list, unknown key, sectional force form).
+# input (zero or negative speed, empty or negative frequency list, unknown key, sectional force form). With
+# solver.adaptive_grid: off rao.csv holds exactly the given frequencies; on (the default) the grid is refined
+# around the peaks: more rows, increasing in omega, no under-sampled peak.
 set -u
 bin="$1"
 tmp=$(mktemp -d)
@@ -17,7 +19,14 @@ solver: { kernel: impulsive, sections: 20, panels: 8, Cs: 0.024, frequencies: $2
 YAML
 }
 
-base "{ Fn: 0.75 }" "{ lambda_over_L: [1.0, 1.5, 2.0] }" > "$tmp/ok.yaml"
+base "{ Fn: 0.75 }" "{ lambda_over_L: [1.0, 1.5, 2.0] }" > "$tmp/refined.yaml"
+"$bin" rao "$tmp/refined.yaml" --out "$tmp/refined" 2> "$tmp/refined.err" || fail "adaptive grid run refused"
+rows=$(grep -v '^#' "$tmp/refined/rao.csv" | tail -n +2 | wc -l)
+[ "$rows" -gt 3 ] || fail "adaptive grid: rao.csv has $rows rows, want more than the 3 given"
+grep -v '^#' "$tmp/refined/rao.csv" | tail -n +2 | awk -F, 'NR > 1 && $2 <= w { exit 1 } { w = $2 }' ||
+  fail "adaptive grid: rao.csv not increasing in omega"
+grep -q "under-sampled" "$tmp/refined.err" && fail "adaptive grid leaves an under-sampled peak: $(cat "$tmp/refined.err")"
+sed 's/Cs: 0.024,/Cs: 0.024, adaptive_grid: off,/' "$tmp/refined.yaml" > "$tmp/ok.yaml"
 "$bin" rao "$tmp/ok.yaml" --out "$tmp/ok" || fail "good config refused"
 header=$(awk '!/^#/ { print; exit }' "$tmp/ok/rao.csv")
 [ "$header" = "omega_e_rad_s,omega_rad_s,lambda_over_L,heave_amp,heave_phase_deg,pitch_amp,pitch_phase_deg" ] ||
@@ -54,13 +63,13 @@ printf 'x_m,y_m,z_m\n0,0,0\n0,0.5,0.1\n1,0,0\n1,0.5,0.1\n2,0,0\n2,0.5,0.1\n' > "
 expect_error low_deck "hull: { offsets_csv: $tmp/low.csv, draught_m: 0.2 }
 speed: { m_s: 2.0 }
 solver: { kernel: impulsive, sections: 10, panels: 6, frequencies: { omega_rad_s: [2.0] } }" "waterline"
-# Running attitude: even keel given explicitly reproduces the default rao.csv byte for byte; the Delft 372
+# Running attitude: even keel given explicitly reproduces the default (refined) rao.csv byte for byte; the Delft 372
 # running trim and sinkage at Fn 0.75 (sinkage 2.57 mm up, trim 1.35 deg bow up) runs and says so in the header.
 base "{ Fn: 0.75 }" "{ lambda_over_L: [1.0, 1.5, 2.0] }" |
   sed 's/spacing_m: 0.70 }/spacing_m: 0.70, attitude: { sinkage_m: 0.0, trim_deg: 0.0 } }/' > "$tmp/even.yaml"
 grep -q "attitude:" "$tmp/even.yaml" || fail "test setup: attitude not inserted"
 "$bin" rao "$tmp/even.yaml" --out "$tmp/even" > /dev/null || fail "even-keel attitude refused"
-cmp -s "$tmp/ok/rao.csv" "$tmp/even/rao.csv" || fail "even-keel attitude changed rao.csv"
+cmp -s "$tmp/refined/rao.csv" "$tmp/even/rao.csv" || fail "even-keel attitude changed rao.csv"
 base "{ Fn: 0.75 }" "{ lambda_over_L: [1.0, 1.5, 2.0] }" |
   sed 's/spacing_m: 0.70 }/spacing_m: 0.70, attitude: { sinkage_m: -0.00257, trim_deg: 1.35 } }/' > "$tmp/run.yaml"
 "$bin" rao "$tmp/run.yaml" --out "$tmp/run" > /dev/null || fail "running attitude refused"

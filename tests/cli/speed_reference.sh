@@ -3,12 +3,15 @@
 # (tests/data/speed_reference/README.md says how they were made): the Delft 372 RAOs (the example at 20 x 8,
 # the paper's 40 x 14, and strip theory at 40 x 14) within 1e-6 of each column's peak amplitude (as complex
 # values), the 14-hull study's MSI within 1e-4 percentage points; and every output byte for byte the same
-# on 1 and 2 OpenMP threads.
+# on 1 and 2 OpenMP threads. The values were recorded on fixed frequency grids: the configs run as copies with
+# solver.adaptive_grid: off (tests/cli/lib/fixed_grid.sh).
 set -u
 bin="$1"
-ref=tests/data/speed_reference
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
+. tests/cli/lib/fixed_grid.sh
+fixed_grid_tree "$tmp/tree"
+ref=$tmp/tree/tests/data/speed_reference
 fail() { echo "FAIL: $*"; exit 1; }
 
 # Tolerances. RAO: 1e-6 of the peak, far above the round-off of a changed summation order or table
@@ -69,12 +72,12 @@ run_both() {  # $1: name, $2: command, $3: config, $4: output file; runs on 1 an
   cmp -s "$tmp/$1_t1/$4" "$tmp/$1_t2/$4" || fail "$1: $4 differs between 1 and 2 threads"
 }
 
-run_both rao20 rao examples/rao_delft372.yaml rao.csv
+run_both rao20 rao "$tmp/tree/examples/rao_delft372.yaml" rao.csv
 compare_rao "$ref/rao_delft372_20x8.csv" "$tmp/rao20_t1/rao.csv" || fail "Delft 372 20 x 8 RAOs moved"
 run_both rao40 rao "$ref/rao_delft372_40x14.yaml" rao.csv
 compare_rao "$ref/rao_delft372_40x14.csv" "$tmp/rao40_t1/rao.csv" || fail "Delft 372 40 x 14 RAOs moved"
 run_both stf rao "$ref/rao_delft372_stf.yaml" rao.csv
 compare_rao "$ref/rao_delft372_stf.csv" "$tmp/stf_t1/rao.csv" || fail "Delft 372 strip-theory RAOs moved"
-run_both study evaluate configs/davis-holloway-2003.yaml msi.csv
+run_both study evaluate "$tmp/tree/configs/davis-holloway-2003.yaml" msi.csv
 compare_msi "$ref/msi_davis_holloway_2003.csv" "$tmp/study_t1/msi.csv" || fail "14-hull study MSI moved"
 echo "speed reference: all results within tolerance, 1 and 2 threads identical"

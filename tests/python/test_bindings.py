@@ -21,7 +21,8 @@ NPL5B = dict(type="catamaran", section_style="round_bilge", displacement_t=1000,
              transom_beam_ratio=0.6, keel_rise=0.3, spacing_over_L=0.25)
 SPEED_M_S = 40 * (1852.0 / 3600.0)  # 40 kn, as io/config/speed_config converts it
 OMEGA = [0.4, 0.6, 0.8, 1.0, 1.2, 1.5, 2.0]
-SOLVER = {"sections": 20, "panels": 8, "Cs": 0.065}
+# The comparisons below are of fixed grids, digit for digit: refinement off (solver.adaptive_grid) everywhere.
+SOLVER = {"sections": 20, "panels": 8, "Cs": 0.065, "adaptive_grid": False}
 
 
 def hull_yaml(extra=""):
@@ -56,6 +57,7 @@ def test_npl5b_raos_match_the_cli_to_the_last_digit(tmp_path):
           sections: {SOLVER['sections']}
           panels: {SOLVER['panels']}
           Cs: {SOLVER['Cs']}
+          adaptive_grid: off
           frequencies: {{ omega_rad_s: [{freqs}] }}
         """)))
     r = run_cli("rao", str(cfg), "--out", str(tmp_path / "rao"))
@@ -77,7 +79,8 @@ def test_npl5b_raos_match_the_cli_to_the_last_digit(tmp_path):
 
 def test_npl5b_msi_matches_evaluate(tmp_path):
     hull_cfg = tmp_path / "npl5b.yaml"
-    hull_cfg.write_text(hull_yaml(f"solver: {{ sections: {SOLVER['sections']}, panels: {SOLVER['panels']} }}\n"))
+    hull_cfg.write_text(hull_yaml(f"solver: {{ sections: {SOLVER['sections']}, panels: {SOLVER['panels']}, "
+                                  "adaptive_grid: off }\n"))
     ev_cfg = tmp_path / "evaluate.yaml"
     ev_cfg.write_text(textwrap.dedent(f"""\
         designs:
@@ -108,7 +111,7 @@ def test_npl5b_msi_matches_evaluate(tmp_path):
 
 def test_design_from_a_config_matches_the_physics_calls(tmp_path):
     cfg = tmp_path / "npl5b.yaml"
-    cfg.write_text(hull_yaml(f"solver: {{ sections: 20, panels: 8, Cs: 0.065 }}\n"))
+    cfg.write_text(hull_yaml(f"solver: {{ sections: 20, panels: 8, Cs: 0.065, adaptive_grid: off }}\n"))
     d = hullopt.load_design(str(cfg), "npl5b")
     assert d.speed_m_s == SPEED_M_S
     a = d.raos(OMEGA)

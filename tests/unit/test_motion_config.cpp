@@ -166,3 +166,26 @@ TEST_CASE("solver.body_potential: read only when given, time-domain momentum for
                     Catch::Contains("solver.body_potential") && Catch::Contains("momentum only"));
   CHECK_THROWS_WITH(bad("body_potential: dipoles\n"), Catch::Contains("solver.body_potential"));
 }
+
+TEST_CASE("solver.adaptive_grid: on by default, off and the caps when given, caps checked", "[config]") {
+  auto d = FromText("frequencies: { lambda_over_L: [1.0, 1.5, 2.0] }\n");
+  const auto c0 = hullopt::io::ParseSolverConfig(d);
+  CHECK(c0.grid.enabled);
+  CHECK_FALSE(d.resolved()["adaptive_grid"]);  // read only when given: configs without it resolve as before
+  auto m = FromText("adaptive_grid: off\nadaptive_grid_max_passes: 3\nadaptive_grid_max_frequencies: 120\n"
+                    "frequencies: { lambda_over_L: [1.0, 1.5, 2.0] }\n");
+  const auto c = hullopt::io::ParseSolverConfig(m);
+  CHECK_FALSE(c.grid.enabled);
+  CHECK(c.grid.max_passes == 3);
+  CHECK(c.grid.max_frequencies == 120);
+  auto on = FromText("adaptive_grid: on\nfrequencies: { lambda_over_L: [1.0] }\n");
+  CHECK(hullopt::io::ParseSolverConfig(on).grid.enabled);
+  auto passes = FromText("adaptive_grid_max_passes: 0\nfrequencies: { lambda_over_L: [1.0] }\n");
+  CHECK_THROWS_WITH(hullopt::io::ParseSolverConfig(passes),
+                    Catch::Contains("solver.adaptive_grid_max_passes") && Catch::Contains("[1, 50]"));
+  auto count = FromText("adaptive_grid_max_frequencies: 2\nfrequencies: { lambda_over_L: [1.0] }\n");
+  CHECK_THROWS_WITH(hullopt::io::ParseSolverConfig(count),
+                    Catch::Contains("solver.adaptive_grid_max_frequencies") && Catch::Contains("[3, 1000]"));
+  auto word = FromText("adaptive_grid: sometimes\nfrequencies: { lambda_over_L: [1.0] }\n");
+  CHECK_THROWS_WITH(hullopt::io::ParseSolverConfig(word), Catch::Contains("solver.adaptive_grid"));
+}
