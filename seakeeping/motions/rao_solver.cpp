@@ -49,12 +49,12 @@ bool RaoSolverOptions::IsValid(std::string* error) const {
 
 StripKernel BuildHullStripKernel(const hull::HullForm& hull, const RaoSolverOptions& options,
                                  double speed_m_s, double rho_kg_m3, double g_m_s2,
-                                 const StripKernelBuilder& builder) {
+                                 const StripKernelBuilder& builder, const StripKernel* geometry) {
   std::string err;
   if (!options.IsValid(&err)) throw std::invalid_argument(err);
   StripGeometryOptions g = options.Geometry();
   if (options.interaction || (hull.bodies.size() == 1 && hull.bodies[0].y_centre_m == 0.0)) {
-    StripKernel k = StripKernelGeometry(hull, g, speed_m_s, rho_kg_m3, g_m_s2);
+    StripKernel k = geometry ? *geometry : StripKernelGeometry(hull, g, speed_m_s, rho_kg_m3, g_m_s2);
     builder(&k);
     return k;
   }
@@ -72,21 +72,23 @@ StripKernel BuildHullStripKernel(const hull::HullForm& hull, const RaoSolverOpti
 
 RaoTable ComputeRaos(const hull::HullForm& hull, const hull::MassProperties& mass, double speed_m_s,
                      double rho_kg_m3, double g_m_s2, const std::vector<double>& omega_rad_s,
-                     const RaoSolverOptions& options, const StripKernelBuilder& builder) {
+                     const RaoSolverOptions& options, const StripKernelBuilder& builder,
+                     const StripKernel* geometry) {
   if (options.method == RaoSolverOptions::Method::kStripTheory) {
     std::string err;
     if (!options.IsValid(&err)) throw std::invalid_argument(err);
     StripGeometryOptions g = options.Geometry();  // the same strip stations as the time-domain method
-    const StripKernel geometry = StripKernelGeometry(hull, g, speed_m_s, rho_kg_m3, g_m_s2);
-    const HeadSeaShipModel model(geometry, mass, options.motion);
+    const StripKernel made = geometry ? StripKernel() : StripKernelGeometry(hull, g, speed_m_s, rho_kg_m3, g_m_s2);
+    const StripKernel& stations = geometry ? *geometry : made;
+    const HeadSeaShipModel model(stations, mass, options.motion);
     RaoTable t = SolveStripTheoryRaos(model, omega_rad_s,
-                                      FrequencyDomainSectionRows(geometry, options.panels, options.interaction,
+                                      FrequencyDomainSectionRows(stations, options.panels, options.interaction,
                                                                  options.section_formulation));
     RequireFiniteRaos(t);
     t.warnings = RaoResonanceWarnings(t);
     return t;
   }
-  const StripKernel kernel = BuildHullStripKernel(hull, options, speed_m_s, rho_kg_m3, g_m_s2, builder);
+  const StripKernel kernel = BuildHullStripKernel(hull, options, speed_m_s, rho_kg_m3, g_m_s2, builder, geometry);
   const HeadSeaShipModel model(kernel, mass, options.motion);
   RaoTable t;
   if (options.path == RaoSolverOptions::Path::kPeriodic) {
