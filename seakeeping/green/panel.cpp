@@ -52,7 +52,8 @@ Point PointAt(const std::vector<Point>& c, const std::vector<double>& s, double 
   return Point{c[k - 1][0] + f * (c[k][0] - c[k - 1][0]), c[k - 1][1] + f * (c[k][1] - c[k - 1][1])};
 }
 
-// std::lround(x) without the libm call for 0 <= x < 2^30 (x − floor(x) is exact there), std::lround otherwise.
+// std::lround(x) without the libm call for 0 <= x < 2^30 (x − floor(x) is exact there), std::lround
+// otherwise.
 int RoundHalfUp(double x) {
   if (!(x >= 0.0 && x < 1073741824.0)) return static_cast<int>(std::lround(x));
   const double f = std::floor(x);
@@ -191,7 +192,8 @@ std::vector<Panel> PanelSymmetricSection(const std::vector<std::array<double, 2>
   for (std::size_t i = 1; i < raw.size(); ++i)
     if (const Side side = SideOf(Squared(raw[i], c.back()), 1e-12 * scale);
         side == Side::kAbove ||
-        (side == Side::kUnsure && std::hypot(raw[i][0] - c.back()[0], raw[i][1] - c.back()[1]) > 1e-12 * scale))
+        (side == Side::kUnsure &&
+         std::hypot(raw[i][0] - c.back()[0], raw[i][1] - c.back()[1]) > 1e-12 * scale))
       c.push_back(raw[i]);
   if (c.size() < 2) throw std::invalid_argument("section contour has zero girth");
   c.front()[0] = 0.0;
@@ -229,11 +231,11 @@ std::vector<Panel> PanelSymmetricSection(const std::vector<std::array<double, 2>
   const int M = std::max(400, 40 * nh);
   std::vector<double> sg(M + 1), density(M + 1);
   for (int m = 0; m <= M; ++m) sg[m] = S * m / M;
-  // Smooth turning |Θ|(s) at the grid points, cumulative: each non-corner vertex's |kink| spread linearly over
-  // the halves of its two segments.
-  // In linear time: at grid point m the vertices (in order) whose ramp is complete add |kink| each, a running sum
-  // kept vertex by vertex (`full`); those whose ramp has begun but not ended are added term by term after it;
-  // the rest add nothing. That is the same sum in the same order as adding every vertex's term at every m.
+  // Smooth turning |Θ|(s) at the grid points, cumulative: each non-corner vertex's |kink| spread linearly
+  // over the halves of its two segments. In linear time: at grid point m the vertices (in order) whose ramp
+  // is complete add |kink| each, a running sum kept vertex by vertex (`full`); those whose ramp has begun but
+  // not ended are added term by term after it; the rest add nothing. That is the same sum in the same order
+  // as adding every vertex's term at every m.
   std::vector<double> turn_at(M + 1, 0.0);
   {
     struct Ramp {
@@ -246,7 +248,9 @@ std::vector<Panel> PanelSymmetricSection(const std::vector<std::array<double, 2>
       const double a = 0.5 * (s[k - 1] + s[k]), b = 0.5 * (s[k] + s[k + 1]);
       ramps.push_back({a, b, std::fabs(kink[k]), std::clamp(static_cast<int>(std::floor(a / S * M)), 0, M)});
     }
-    auto term = [&](const Ramp& r, int m) { return r.abs_kink * std::clamp((sg[m] - r.a) / (r.b - r.a), 0.0, 1.0); };
+    auto term = [&](const Ramp& r, int m) {
+      return r.abs_kink * std::clamp((sg[m] - r.a) / (r.b - r.a), 0.0, 1.0);
+    };
     std::size_t done = 0, begun = 0;  // ramps [0, done) complete at m, [done, begun) begun
     double full = 0.0;                // the running sum over the complete ones
     for (int m = 0; m <= M; ++m) {
@@ -263,13 +267,13 @@ std::vector<Panel> PanelSymmetricSection(const std::vector<std::array<double, 2>
   std::vector<Point> pt(Mt + 1);
   std::vector<double> st(Mt + 1), thick(Mt + 1, std::numeric_limits<double>::infinity());
   for (int m = 0; m <= Mt; ++m) st[m] = S * m / Mt, pt[m] = at(st[m]);
-  // Which pairs to look at. A thickness t acts only where thickness_fraction × t < H (below that h <= H already),
-  // i.e. t < reach = H / thickness_fraction. And a piece of contour whose direction turns by Θ in all has a
-  // chord of at least its length × cos(Θ/2), so q is across a fold from m (chord < length / fold_ratio) only
-  // where the contour turns by more than 2 acos(1 / fold_ratio) between them: with the cumulative |turning|
-  // K at the points (an upper bound: every vertex up to the point counts), those q are an index range at
-  // either end (same side) or at the waterline end (through the keel, whose own kink adds). Of the q looked
-  // at, the squares drop those certainly farther than reach, than the nearest so far or than
+  // Which pairs to look at. A thickness t acts only where thickness_fraction × t < H (below that h <= H
+  // already), i.e. t < reach = H / thickness_fraction. And a piece of contour whose direction turns by Θ in
+  // all has a chord of at least its length × cos(Θ/2), so q is across a fold from m (chord < length /
+  // fold_ratio) only where the contour turns by more than 2 acos(1 / fold_ratio) between them: with the
+  // cumulative |turning| K at the points (an upper bound: every vertex up to the point counts), those q are
+  // an index range at either end (same side) or at the waterline end (through the keel, whose own kink adds).
+  // Of the q looked at, the squares drop those certainly farther than reach, than the nearest so far or than
   // along / fold_ratio (a relative margin of 1e-9 over their rounding, where they can neither underflow nor
   // overflow, checked once); hypot and the original test for the rest. Each thickness that can act is thus
   // the nearest distance over all points, bit for bit; the others stay infinite or too large to act. For a
@@ -277,15 +281,17 @@ std::vector<Panel> PanelSymmetricSection(const std::vector<std::array<double, 2>
   const double reach = spacing.thickness_fraction > 0.0 ? H / spacing.thickness_fraction * (1.0 + 1e-6)
                                                         : std::numeric_limits<double>::infinity();
   const double kMargin = 1.0 + 1e-9;
-  const bool squares_ok = S / Mt > 1e-100 && S < 1e100 && spacing.fold_ratio >= 1e-50 && spacing.fold_ratio <= 1e50 &&
-                          (reach >= 1e-100 || !std::isfinite(reach));
+  const bool squares_ok = S / Mt > 1e-100 && S < 1e100 && spacing.fold_ratio >= 1e-50 &&
+                          spacing.fold_ratio <= 1e50 && (reach >= 1e-100 || !std::isfinite(reach));
   const double reach2 = std::isfinite(reach) ? reach * reach : std::numeric_limits<double>::infinity();
   const double inv_fold2 = 1.0 / (spacing.fold_ratio * spacing.fold_ratio);
   const double max_turn = FoldTurn(spacing.fold_ratio);
   const std::vector<double> turned = TurningAt(s, kink, st);
   const double dy0 = c[1][0] - c[0][0], dz0 = c[1][1] - c[0][1];
-  const double keel_turn = std::fabs(std::atan2(2.0 * dy0 * dz0, dy0 * dy0 - dz0 * dz0));  // mirror image → contour
-  const bool prune = max_turn > 0.0 && !turned.empty() && std::isfinite(turned.back()) && std::isfinite(keel_turn);
+  const double keel_turn =
+      std::fabs(std::atan2(2.0 * dy0 * dz0, dy0 * dy0 - dz0 * dz0));  // mirror image → contour
+  const bool prune =
+      max_turn > 0.0 && !turned.empty() && std::isfinite(turned.back()) && std::isfinite(keel_turn);
   SortedCursor below_m(turned), above_m(turned), through_keel(turned);
   for (int m = 0; m <= Mt; ++m) {
     const Point mirror{-pt[m][0], pt[m][1]};  // pt[m]'s mirror image: d_mirror is its distance to pt[q]
@@ -293,11 +299,12 @@ std::vector<Panel> PanelSymmetricSection(const std::vector<std::array<double, 2>
     auto consider = [&](int q, bool mirrored) {
       if (!mirrored && q == m) return;  // along = 0: never across
       const double along = mirrored ? st[q] + st[m] : std::fabs(st[q] - st[m]);
-      if (squares_ok &&
-          Squared(pt[q], mirrored ? mirror : pt[m]) > std::min(std::min(reach2, along * along * inv_fold2), thick2) * kMargin)
+      if (squares_ok && Squared(pt[q], mirrored ? mirror : pt[m]) >
+                            std::min(std::min(reach2, along * along * inv_fold2), thick2) * kMargin)
         return;
-      const double d = mirrored ? std::hypot(pt[q][0] + pt[m][0], pt[q][1] - pt[m][1])  // arc through the keel
-                                : std::hypot(pt[q][0] - pt[m][0], pt[q][1] - pt[m][1]);
+      const double d = mirrored
+                           ? std::hypot(pt[q][0] + pt[m][0], pt[q][1] - pt[m][1])  // arc through the keel
+                           : std::hypot(pt[q][0] - pt[m][0], pt[q][1] - pt[m][1]);
       if (along > spacing.fold_ratio * d) {
         thick[m] = std::min(thick[m], d);
         thick2 = thick[m] > 1e-100 ? thick[m] * thick[m] : std::numeric_limits<double>::infinity();
@@ -308,7 +315,8 @@ std::vector<Panel> PanelSymmetricSection(const std::vector<std::array<double, 2>
       continue;
     }
     // Same side: K[q] < K[m] − max_turn (towards the keel) or K[q] > K[m] + max_turn (towards the waterline).
-    const int below = below_m.FirstAbove(turned[m] - max_turn) - 1;  // a superset of the first range: 0 .. below
+    const int below =
+        below_m.FirstAbove(turned[m] - max_turn) - 1;  // a superset of the first range: 0 .. below
     for (int q = 0; q <= std::min(below + 1, Mt); ++q) consider(q, false);
     for (int q = above_m.FirstAbove(turned[m] + max_turn); q <= Mt; ++q) consider(q, false);
     // Through the keel: K[m] + keel turn + K[q] > max_turn.
@@ -376,9 +384,12 @@ std::vector<Panel> PanelSymmetricSection(const std::vector<std::array<double, 2>
   for (std::size_t k = 1; k + 1 < nv; ++k) {
     const double tol = 1e-9 * S;
     // With the end points in order only the panel whose span holds s[k] can hold it strictly inside.
-    const int first = sorted_nodes ? std::clamp(static_cast<int>(std::upper_bound(node_s.begin(), node_s.end(), s[k]) -
-                                                                 node_s.begin()) - 1, 0, nh - 1)
-                                   : 0;
+    const int first =
+        sorted_nodes
+            ? std::clamp(
+                  static_cast<int>(std::upper_bound(node_s.begin(), node_s.end(), s[k]) - node_s.begin()) - 1,
+                  0, nh - 1)
+            : 0;
     const int last = sorted_nodes ? first : nh - 1;
     for (int i = first; i <= last; ++i)
       if (s[k] > node_s[i] + tol && s[k] < node_s[i + 1] - tol) turn[i] += kink[k];

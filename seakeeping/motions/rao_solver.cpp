@@ -78,17 +78,20 @@ RaoTable ComputeRaos(const hull::HullForm& hull, const hull::MassProperties& mas
     std::string err;
     if (!options.IsValid(&err)) throw std::invalid_argument(err);
     StripGeometryOptions g = options.Geometry();  // the same strip stations as the time-domain method
-    const StripKernel made = geometry ? StripKernel() : StripKernelGeometry(hull, g, speed_m_s, rho_kg_m3, g_m_s2);
+    const StripKernel made =
+        geometry ? StripKernel() : StripKernelGeometry(hull, g, speed_m_s, rho_kg_m3, g_m_s2);
     const StripKernel& stations = geometry ? *geometry : made;
     const HeadSeaShipModel model(stations, mass, options.motion);
-    RaoTable t = SolveStripTheoryRaos(model, omega_rad_s,
-                                      FrequencyDomainSectionRows(stations, options.panels, options.interaction,
-                                                                 options.section_formulation));
+    RaoTable t =
+        SolveStripTheoryRaos(model, omega_rad_s,
+                             FrequencyDomainSectionRows(stations, options.panels, options.interaction,
+                                                        options.section_formulation));
     RequireFiniteRaos(t);
     t.warnings = RaoResonanceWarnings(t);
     return t;
   }
-  const StripKernel kernel = BuildHullStripKernel(hull, options, speed_m_s, rho_kg_m3, g_m_s2, builder, geometry);
+  const StripKernel kernel =
+      BuildHullStripKernel(hull, options, speed_m_s, rho_kg_m3, g_m_s2, builder, geometry);
   const HeadSeaShipModel model(kernel, mass, options.motion);
   RaoTable t;
   if (options.path == RaoSolverOptions::Path::kPeriodic) {

@@ -49,16 +49,15 @@ struct RaoSolverOptions {
 
 /// The strip kernel of the hull at speed U (all bodies together, or body by body without interaction and
 /// combined). Throws as StripKernelGeometry and the builder do. `geometry`, when given, is
-/// StripKernelGeometry(hull, options.Geometry(), speed, ρ, g) already made (a caller that checked the sections
-/// first): it is used instead of panelling the sections again where all bodies share the strips.
+/// StripKernelGeometry(hull, options.Geometry(), speed, ρ, g) already made (a caller that checked the
+/// sections first): it is used instead of panelling the sections again where all bodies share the strips.
 StripKernel BuildHullStripKernel(const hull::HullForm& hull, const RaoSolverOptions& options,
                                  double speed_m_s, double rho_kg_m3, double g_m_s2,
                                  const StripKernelBuilder& builder, const StripKernel* geometry = nullptr);
 
-/// RAOs at the wave frequencies omega_rad_s (increasing, > 0), with StripKernelWarnings in `warnings`. Throws std::invalid_argument for bad options,
-/// speed or frequencies, std::domain_error for a hull that cannot be solved or non-finite results (naming the
-/// hull and frequency).
-/// `geometry`: as for BuildHullStripKernel.
+/// RAOs at the wave frequencies omega_rad_s (increasing, > 0), with StripKernelWarnings in `warnings`. Throws
+/// std::invalid_argument for bad options, speed or frequencies, std::domain_error for a hull that cannot be
+/// solved or non-finite results (naming the hull and frequency). `geometry`: as for BuildHullStripKernel.
 RaoTable ComputeRaos(const hull::HullForm& hull, const hull::MassProperties& mass, double speed_m_s,
                      double rho_kg_m3, double g_m_s2, const std::vector<double>& omega_rad_s,
                      const RaoSolverOptions& options, const StripKernelBuilder& builder,

@@ -98,7 +98,8 @@ TEST_CASE("a fold thinner than the cut limit is cut at its root, a thicker one k
   // its root, so no panel reaches beyond y = 0.4 m by more than the limit; a 0.2 m plate is kept whole and
   // its outer edge (y = 1 m) is a panel end point.
   auto contour = [](double e) {
-    return std::vector<std::array<double, 2>>{{0.0, -0.5}, {1.0, -0.5}, {1.0, -0.5 + e}, {0.4, -0.5 + e}, {0.4, 0.0}};
+    return std::vector<std::array<double, 2>>{
+        {0.0, -0.5}, {1.0, -0.5}, {1.0, -0.5 + e}, {0.4, -0.5 + e}, {0.4, 0.0}};
   };
   const double limit = 0.1 * 2.3 / 7;  // cut_thickness_fraction x uniform spacing (PanelSpacing defaults)
   auto reach = [](const std::vector<hullopt::sk::Panel>& ps) {
