@@ -208,7 +208,6 @@ void CampaignRunner::Finish() {
   kind_.Summarise(*this, best, &s);
   s["wall_time_s"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0_).count();
   io::WriteJson(OutPath(options_.out, "summary.json"), s);
-  kind_.WritePlots(*this);
   if (best >= 0) {
     char comment[200];
     std::snprintf(comment, sizeof comment, "hullopt %s: %s of %s (evaluation %ld, objective %.10g); %s",
@@ -230,7 +229,13 @@ void CampaignRunner::Finish() {
                                   all.first_message);
     if (command == "optimize")
       active_set = ActiveSet(def, campaign_.evaluator->QuantityNames(), recs[best], campaign_.evaluator.get());
-    WriteCampaignReport(options_.out, command, options_.config, campaign_warnings, active_set);
+    // The figures after the numbers (summary.json, best.yaml): the report shows them.
+    if (!options_.no_plots) {
+      kind_.WritePlots(*this);
+      WriteCampaignReport(options_.out, command, options_.config, campaign_warnings, active_set);
+    }
+  } else if (!options_.no_plots) {
+    kind_.WritePlots(*this);
   }
   if (!options_.quiet) kind_.PrintResult(*this, best, s);
 }
@@ -248,6 +253,7 @@ CLI::App* AddCampaignCommand(CLI::App& app, const CommandText& text,
   cmd->add_option("--threads", o->threads, "OpenMP threads per process (0 = OpenMP default)");
   if (more_options) more_options(cmd);
   cmd->add_flag("--quiet", o->quiet, "no progress output");
+  cmd->add_flag("--no-plots", o->no_plots, "write the numbers only: no SVG figures and no report.html");
   return cmd;
 }
 

@@ -33,6 +33,7 @@ struct CampaignCliOptions {
   std::string out;     ///< output folder
   int threads = 0;     ///< OpenMP threads per process (0 = the OpenMP default)
   bool quiet = false;  ///< no progress or result lines
+  bool no_plots = false;  ///< no SVG figures and no report.html (the numbers only)
 };
 
 /// The size of a campaign, for the cost check and the progress bar.

@@ -10,6 +10,7 @@
 
 #include "app/calibration_model.h"
 #include "app/commands.h"
+#include "app/output_options.h"
 #include "app/output_dir.h"
 #include "evaluation/validity_envelope.h"
 #include "io/formats/atomic_file.h"
@@ -120,16 +121,16 @@ void RunCalibrate(const std::string& config_file, const std::string& out_dir) {
     }
   }
 
-  std::cout << r.BriefReport() << "\n";
+  Out() << r.BriefReport() << "\n";
   for (const auto& pk : r.peaks) {
-    std::printf("  %s %s peak: measured %.4g, computed %.4g (%+.1f%%) before, %.4g (%+.1f%%) after\n",
-                cases[pk.case_index].label.c_str(), pk.quantity.c_str(), pk.measured.value, pk.before.value,
-                100 * pk.RelativeErrorBefore(), pk.after.value, 100 * pk.RelativeErrorAfter());
+    Say("  %s %s peak: measured %.4g, computed %.4g (%+.1f%%) before, %.4g (%+.1f%%) after\n",
+        cases[pk.case_index].label.c_str(), pk.quantity.c_str(), pk.measured.value, pk.before.value,
+        100 * pk.RelativeErrorBefore(), pk.after.value, 100 * pk.RelativeErrorAfter());
   }
   for (const auto& w : r.warnings) std::cerr << "hullopt: warning: calibration: " << w << "\n";
-  std::cout << "wrote " << out_dir << "/{calibration.json, calibration_report.txt, calibration_plot.svg";
-  for (const auto& s : snippets) std::cout << ", " << s;
-  std::cout << ", config.resolved.yaml, VERSION}\n";
+  Out() << "wrote " << out_dir << "/{calibration.json, calibration_report.txt, calibration_plot.svg";
+  for (const auto& s : snippets) Out() << ", " << s;
+  Out() << ", config.resolved.yaml, VERSION}\n";
 }
 
 }  // namespace

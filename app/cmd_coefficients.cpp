@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "app/commands.h"
+#include "app/output_options.h"
 #include "io/config/design_config.h"
 #include "app/output_dir.h"
 #include "app/run_checks.h"
@@ -73,11 +74,11 @@ void RunCoefficients(const std::string& config_file, const std::string& out_dir)
   if (any && skipped > 0) m.label += " (" + std::to_string(skipped) + " doubtful row(s) left out)";
   io::WriteSvg(io::CoefficientsFigure({t}, {curve}, L, "Coefficients: " + fn.str(), any ? &m : nullptr),
                OutPath(out_dir, "coefficients.svg"));
-  std::printf("hull '%s': %zu frequencies, omega_e sqrt(L/g) %.3g to %.3g; measured points drawn: %zu heave, "
-              "%zu pitch, %zu wave loads; wrote coefficients.csv, coefficients.svg in %s\n",
-              name.c_str(), t.rows.size(), t.rows.front().omega_e_rad_s * std::sqrt(L / g),
-              t.rows.back().omega_e_rad_s * std::sqrt(L / g), m.heave_x.size(), m.pitch_x.size(),
-              m.load_x.size(), out_dir.c_str());
+  Say("hull '%s': %zu frequencies, omega_e sqrt(L/g) %.3g to %.3g; measured points drawn: %zu heave, "
+      "%zu pitch, %zu wave loads; wrote coefficients.csv, coefficients.svg in %s\n",
+      name.c_str(), t.rows.size(), t.rows.front().omega_e_rad_s * std::sqrt(L / g),
+      t.rows.back().omega_e_rad_s * std::sqrt(L / g), m.heave_x.size(), m.pitch_x.size(),
+      m.load_x.size(), out_dir.c_str());
 }
 
 }  // namespace

@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "app/commands.h"
+#include "app/output_options.h"
 #include "app/single_design.h"
 #include "app/output_dir.h"
 #include "app/run_checks.h"
@@ -96,7 +97,8 @@ void RunDesign(const std::string& config, const std::string& out) {
   std::ostringstream title;
   title << dc.hull.type << " - L " << Fmt(h.L_m) << " m, B " << Fmt(h.B_m) << " m, T " << Fmt(h.T_m) << " m, "
         << Fmt(h.displacement_t) << " t";
-  io::WriteBodyPlanSvg(OutPath(out, "bodyplan.svg"), dc.hull, title.str());
+  const bool plots = !NoPlotsGiven();  // --no-plots: the numbers only
+  if (plots) io::WriteBodyPlanSvg(OutPath(out, "bodyplan.svg"), dc.hull, title.str());
   std::ostringstream about;
   about << "speed U = " << dc.speed_m_s << " m/s (Fn " << d.parameters.at("Fr") << "), method "
         << eval::MethodName(dc.solver.rao.method) << ", " << dc.solver.rao.sections << " sections x "
@@ -112,10 +114,12 @@ void RunDesign(const std::string& config, const std::string& out) {
   std::ostringstream plot_title;
   plot_title << "RAOs at U " << Fmt(dc.speed_m_s) << " m/s (Fn " << Fmt(d.parameters.at("Fr"), 3) << "), "
              << dc.solver.rao.sections << " x " << dc.solver.rao.panels << ", Cs " << dc.solver.cs();
-  io::WriteSvg(io::RaoFigure({d.rao}, {eval::MethodName(dc.solver.rao.method)}, h.L_m, plot_title.str()),
-               OutPath(out, "rao.svg"));
+  if (plots)
+    io::WriteSvg(io::RaoFigure({d.rao}, {eval::MethodName(dc.solver.rao.method)}, h.L_m, plot_title.str()),
+                 OutPath(out, "rao.svg"));
   const std::vector<io::EvaluatedDesign> designs = {d};
   io::EvaluationReportOptions report;
+  report.plots = plots;
   report.plot_parameters.clear();  // one design: no MSI-vs-parameter plots
   io::WriteEvaluationOutputs(out, designs, options, report);
   // EvaluationWarnings holds the RAO table's warnings already: each is listed and printed once.
@@ -127,18 +131,19 @@ void RunDesign(const std::string& config, const std::string& out) {
   } catch (const std::invalid_argument& e) {
     throw io::InputError(config + ": design '" + name + "': seakeeping criteria: " + e.what());
   }
-  AddReport(out, config, root.resolved(), dc, d, notes, warnings, verdict);
+  if (plots) AddReport(out, config, root.resolved(), dc, d, notes, warnings, verdict);
   for (const auto& n : notes) std::cerr << "hullopt: note: " << n << "\n";
   for (const auto& w : warnings) std::cerr << "hullopt: warning: " << w << "\n";
-  std::printf("%-8s %6s %6s %10s %10s %10s %8s\n", "design", "Hs_m", "Tz_s", "fwd_g/m", "lcg_g/m", "transom_g/m",
-              "MSI_%");
+  Say("%-8s %6s %6s %10s %10s %10s %8s\n", "design", "Hs_m", "Tz_s", "fwd_g/m", "lcg_g/m", "transom_g/m",
+      "MSI_%");
   for (const auto& s : d.evaluation.seas)
-    std::printf("%-8s %6.2f %6.2f %10.4f %10.4f %10.4f %8.1f\n", name.c_str(), s.sea.Hs_m, s.Tz_s,
-                s.positions[0].rms_accel_g / s.sea.Hs_m, s.positions[1].rms_accel_g / s.sea.Hs_m,
-                s.positions[2].rms_accel_g / s.sea.Hs_m, s.mean.msi_pct);
-  std::printf("verdict: %s\n", io::VerdictLine(name, io::DefaultCriteria(), verdict).c_str());
-  std::printf("wrote hydrostatics.json, bodyplan.svg, rao.csv, rao.svg, msi.csv, summary.json, report.html to %s\n",
-              out.c_str());
+    Say("%-8s %6.2f %6.2f %10.4f %10.4f %10.4f %8.1f\n", name.c_str(), s.sea.Hs_m, s.Tz_s,
+        s.positions[0].rms_accel_g / s.sea.Hs_m, s.positions[1].rms_accel_g / s.sea.Hs_m,
+        s.positions[2].rms_accel_g / s.sea.Hs_m, s.mean.msi_pct);
+  Say("verdict: %s\n", io::VerdictLine(name, io::DefaultCriteria(), verdict).c_str());
+  Say(plots ? "wrote hydrostatics.json, bodyplan.svg, rao.csv, rao.svg, msi.csv, summary.json, report.html to %s\n"
+            : "wrote hydrostatics.json, rao.csv, msi.csv, summary.json to %s\n",
+      out.c_str());
 }
 
 }  // namespace

@@ -35,6 +35,7 @@
 #include <yaml-cpp/yaml.h>
 
 #include "app/commands.h"
+#include "app/output_options.h"
 #include "app/design_resolution_check.h"
 #include "evaluation/validity_envelope.h"
 #include "io/config/design_defaults.h"
@@ -245,7 +246,7 @@ void Run(const std::string& config_file, const std::string& out_dir) {
   const io::ResolutionCheckConfig resolution = io::ReadResolutionCheck(root);
   io::YamlMap report_map = root.MapOrEmpty("report");
   io::EvaluationReportOptions report;
-  report.plots = report_map.Boolean("plots", true);
+  report.plots = report_map.Boolean("plots", true) && !NoPlotsGiven();
   report_map.Finish();
   root.Finish();
 
@@ -298,11 +299,11 @@ void Run(const std::string& config_file, const std::string& out_dir) {
                                                      operability.criteria, operability.scatter_csv))
       files.push_back(f);
     for (const auto& o : operabilities) {
-      std::printf("operability %-16s weighted mean MSI %.2f %%, all criteria met %.1f %% of the time",
-                  o.name.c_str(), o.result.weighted_mean_msi_pct, o.result.all_criteria_time_pct);
+      Say("operability %-16s weighted mean MSI %.2f %%, all criteria met %.1f %% of the time",
+          o.name.c_str(), o.result.weighted_mean_msi_pct, o.result.all_criteria_time_pct);
       for (size_t k = 0; k < operability.criteria.size(); ++k)
-        std::printf("; %s %.1f %%", operability.criteria[k].name.c_str(), o.result.criterion_time_pct[k]);
-      std::printf("\n");
+        Say("; %s %.1f %%", operability.criteria[k].name.c_str(), o.result.criterion_time_pct[k]);
+      Say("\n");
     }
   }
   const std::vector<std::string> warnings = io::EvaluationWarnings(designs, report);
@@ -321,7 +322,7 @@ void Run(const std::string& config_file, const std::string& out_dir) {
       throw io::InputError(inputs[i].where + ": design '" + designs[i].name + "': seakeeping criteria: " + e.what());
     }
   }
-  {
+  if (!NoPlotsGiven()) {  // --no-plots: the numbers only
     io::HtmlReport r("hullopt evaluate: " + std::filesystem::path(config_file).filename().string());
     r.Paragraph("Config " + config_file + "; " + std::to_string(designs.size()) + " design(s) in " +
                 std::to_string(seas.size()) + " head sea(s); MSI model " + sk::MsiModelName(options.msi.model) +
@@ -341,21 +342,21 @@ void Run(const std::string& config_file, const std::string& out_dir) {
     files.push_back("report.html");
   }
   for (std::size_t i = 0; i < designs.size(); ++i)
-    std::printf("verdict: %s\n", io::VerdictLine(designs[i].name, criteria, verdicts[i]).c_str());
+    Say("verdict: %s\n", io::VerdictLine(designs[i].name, criteria, verdicts[i]).c_str());
 
-  std::printf("%-16s %6s %6s %10s %10s %10s %8s\n", "design", "Hs_m", "Tz_s", "fwd_g/m", "lcg_g/m",
-              "transom_g/m", "MSI_%");
+  Say("%-16s %6s %6s %10s %10s %10s %8s\n", "design", "Hs_m", "Tz_s", "fwd_g/m", "lcg_g/m",
+      "transom_g/m", "MSI_%");
   for (const auto& d : designs) {
     for (const auto& s : d.evaluation.seas) {
       const double h = s.sea.Hs_m;
-      std::printf("%-16s %6.2f %6.2f %10.4f %10.4f %10.4f %8.1f\n", d.name.c_str(), h, s.Tz_s,
-                  s.positions[0].rms_accel_g / h, s.positions[1].rms_accel_g / h,
-                  s.positions[2].rms_accel_g / h, s.mean.msi_pct);
+      Say("%-16s %6.2f %6.2f %10.4f %10.4f %10.4f %8.1f\n", d.name.c_str(), h, s.Tz_s,
+          s.positions[0].rms_accel_g / h, s.positions[1].rms_accel_g / h,
+          s.positions[2].rms_accel_g / h, s.mean.msi_pct);
     }
   }
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  std::printf("wrote %zu files to %s (%.2f s); MSI model %s\n", files.size() + 2, out_dir.c_str(), seconds,
-              sk::MsiModelName(options.msi.model).c_str());
+  Say("wrote %zu files to %s (%.2f s); MSI model %s\n", files.size() + 2, out_dir.c_str(), seconds,
+      sk::MsiModelName(options.msi.model).c_str());
 }
 
 }  // namespace

@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "app/commands.h"
+#include "app/output_options.h"
 #include "app/output_dir.h"
 #include "evaluation/hull_plausibility.h"
 #include "io/report/bodyplan_svg.h"
@@ -87,18 +88,18 @@ void RunHull(const std::string& config, const std::string& out_dir) {
         << io::FormatNumber(hs.T_m) << " m, " << io::FormatNumber(hs.displacement_t) << " t";
   io::WriteBodyPlanSvg(OutPath(out_dir, "bodyplan.svg"), hull, title.str());
 
-  std::cout << "hull " << hull.type << ": L = " << hs.L_m << " m, B = " << hs.B_m << " m, T = " << hs.T_m
+  Out() << "hull " << hull.type << ": L = " << hs.L_m << " m, B = " << hs.B_m << " m, T = " << hs.T_m
             << " m, displacement = " << hs.displacement_t << " t (rho " << water.rho_kg_m3 << " kg/m^3)\n"
             << "  Cb " << hs.Cb << "  Cp " << hs.Cp << "  Cm " << hs.Cm << "  Cwp " << hs.Cwp << "  Cvp "
             << hs.Cvp << "  LCB " << hs.LCB_pct_L << " %L  LCF " << hs.LCF_pct_L << " %L";
-  if (rep.speed_m_s) std::cout << "  Fr " << *rep.speed_m_s / std::sqrt(water.g_m_s2 * hs.L_m);
+  if (rep.speed_m_s) Out() << "  Fr " << *rep.speed_m_s / std::sqrt(water.g_m_s2 * hs.L_m);
   if (rep.running)
-    std::cout << "\n  running attitude (sinkage " << rep.attitude.sinkage_m << " m + down, trim "
+    Out() << "\n  running attitude (sinkage " << rep.attitude.sinkage_m << " m + down, trim "
               << rep.attitude.trim_deg << " deg + bow up, at x = " << rep.attitude.pivot_x_m
               << " m): displacement " << rep.running->displacement_t << " t, LCB " << rep.running->lcb_m_from_ap
               << " m from AP, waterplane " << rep.running->awp_m2 << " m^2";
-  for (const auto& a : hull.adjustments) std::cout << "\n  adjusted: " << a;
-  std::cout << "\n  wrote " << out_dir
+  for (const auto& a : hull.adjustments) Out() << "\n  adjusted: " << a;
+  Out() << "\n  wrote " << out_dir
             << "/{hydrostatics.json, offsets.csv, bodyplan.svg, config.resolved.yaml}\n";
 }
 

@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "app/commands.h"
+#include "app/output_options.h"
 #include "app/output_dir.h"
 #include "app/run_checks.h"
 #include "evaluation/adaptive_frequency_grid.h"
@@ -79,9 +80,10 @@ void RunRao(const std::string& config_file, const std::string& out_dir) {
       eval::StripAttitude(hull, mass, U, water, sc, hull_opts.attitude, config_file + ": hull '" + hull_name + "'");
   const hull::HullForm running = sc.steady_flow ? hull::ApplyRunningAttitude(hull, attitude)
                                                 : io::ApplyHullAttitude(hull_opts, hull, mass.lcg_m_from_ap, config_file);
+  sk::StripKernel geometry;  // panelled once: the check here, then the solver
   try {
     // Sections first: a section that does not reach the waterline is named with its body and station.
-    sk::StripKernelGeometry(running, sc.rao.Geometry(), 1.0, water.rho_kg_m3, water.g_m_s2);
+    geometry = sk::StripKernelGeometry(running, sc.rao.Geometry(), U, water.rho_kg_m3, water.g_m_s2);
     hull::ComputeHydrostatics(running, water.rho_kg_m3);
   } catch (const std::exception& e) {
     throw io::InputError("hull '" + hull_name + "': " + e.what());
@@ -96,7 +98,7 @@ void RunRao(const std::string& config_file, const std::string& out_dir) {
   sk::RaoTable t;
   try {
     // solver.adaptive_grid (on by default): the peaks refined from the given grid, the kernel built once.
-    const sk::RaoSweeper sweeper(running, mass, U, water.rho_kg_m3, water.g_m_s2, o, builder);
+    const sk::RaoSweeper sweeper(running, mass, U, water.rho_kg_m3, water.g_m_s2, o, builder, &geometry);
     t = eval::SweepAdaptively(sweeper, omega, sc.grid);
   } catch (const std::domain_error& e) {
     throw io::InputError(std::string("cannot compute RAOs: ") + e.what());
@@ -131,8 +133,9 @@ void RunRao(const std::string& config_file, const std::string& out_dir) {
   }
   const std::string curve =
       sc.rao.method == sk::RaoSolverOptions::Method::kStripTheory ? "strip theory (STF type)" : "time-domain strip (" + kernel_kind + ")";
-  io::WriteSvg(io::RaoFigure({t}, {curve}, hs.L_m, "RAOs: " + fn.str(), measured ? &*measured : nullptr),
-               OutPath(out_dir, "rao.svg"));
+  if (!NoPlotsGiven())  // the figure after the numbers
+    io::WriteSvg(io::RaoFigure({t}, {curve}, hs.L_m, "RAOs: " + fn.str(), measured ? &*measured : nullptr),
+                 OutPath(out_dir, "rao.svg"));
   // One line for the console: where the heave and pitch peaks are (parabola through the largest sample).
   std::vector<double> lam, heave, pitch;
   for (std::size_t i = 0; i < t.omega_rad_s.size(); ++i) {
@@ -142,11 +145,11 @@ void RunRao(const std::string& config_file, const std::string& out_dir) {
   }
   const auto h = opt::InterpolatedPeak(lam, heave), p = opt::InterpolatedPeak(lam, pitch);
   auto edge = [](const opt::RaoPeak& r) { return r.at_edge ? " (at the end of the range)" : ""; };
-  std::printf("hull '%s': heave peak %.4g m/m at lambda/L %.3g%s, pitch peak %.4g rad/rad at lambda/L %.3g%s; "
-              "%swrote rao.csv, rao.svg in %s\n",
-              hull_name.c_str(), h.value, h.x, edge(h), p.value, p.x, edge(p),
-              measured ? ("measured points drawn: " + std::to_string(measured->heave_amp.size()) + "; ").c_str() : "",
-              out_dir.c_str());
+  Say("hull '%s': heave peak %.4g m/m at lambda/L %.3g%s, pitch peak %.4g rad/rad at lambda/L %.3g%s; "
+      "%swrote rao.csv%s in %s\n",
+      hull_name.c_str(), h.value, h.x, edge(h), p.value, p.x, edge(p),
+      measured ? ("measured points drawn: " + std::to_string(measured->heave_amp.size()) + "; ").c_str() : "",
+      NoPlotsGiven() ? "" : ", rao.svg", out_dir.c_str());
 }
 
 }  // namespace

@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "app/commands.h"
+#include "app/output_options.h"
 #include "app/output_dir.h"
 #include "evaluation/hull_plausibility.h"
 #include "io/config/design_config.h"
@@ -106,10 +107,10 @@ void RunResistance(const std::string& config, const std::string& out_dir) {
   io::WriteSvg(io::ResistanceFigure(rows, "Calm-water resistance: " + hull_name + " (" + hull.type + ")", cond.str()),
                OutPath(out_dir, "resistance.svg"));
   const auto& last = rows.back();
-  std::printf("hull '%s': %zu speeds; at %.4g kn (Fn %.3g): R_T %.4g kN (R_W %.3g, (1+k)R_F %.3g, R_h %.3g), "
-              "C_T %.4g, P_E %.4g kW; wrote resistance.csv, resistance.svg in %s\n",
-              hull_name.c_str(), rows.size(), last.U_m_s / io::kMetresPerSecondPerKnot, last.Fn, last.R_T_N / 1e3,
-              last.R_W_N / 1e3, last.R_V_N / 1e3, last.R_H_N / 1e3, last.C_T, last.P_E_W / 1e3, out_dir.c_str());
+  Say("hull '%s': %zu speeds; at %.4g kn (Fn %.3g): R_T %.4g kN (R_W %.3g, (1+k)R_F %.3g, R_h %.3g), "
+      "C_T %.4g, P_E %.4g kW; wrote resistance.csv, resistance.svg in %s\n",
+      hull_name.c_str(), rows.size(), last.U_m_s / io::kMetresPerSecondPerKnot, last.Fn, last.R_T_N / 1e3,
+      last.R_W_N / 1e3, last.R_V_N / 1e3, last.R_H_N / 1e3, last.C_T, last.P_E_W / 1e3, out_dir.c_str());
 }
 
 }  // namespace

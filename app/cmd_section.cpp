@@ -11,6 +11,7 @@
 #include <stdexcept>
 
 #include "app/commands.h"
+#include "app/output_options.h"
 #include "app/output_dir.h"
 #include "app/run_checks.h"
 #include "io/formats/atomic_file.h"
@@ -154,7 +155,7 @@ void RunSection(const std::string& config_file, const std::string& out_dir) {
   for (const auto& w : cfg.warnings) std::cerr << "hullopt: warning: " << w << "\n";
   WriteCsv(curves, OutPath(out_dir, "section.csv"));
   WritePlot(curves, cfg, OutPath(out_dir, "section.svg"));
-  std::cout << "hullopt section: " << cfg.omegas_rad_s.size() << " frequencies, " << cfg.methods.size()
+  Out() << "hullopt section: " << cfg.omegas_rad_s.size() << " frequencies, " << cfg.methods.size()
             << " method(s) -> " << OutPath(out_dir, "section.csv") << ", " << OutPath(out_dir, "section.svg")
             << "\n";
 }

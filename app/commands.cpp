@@ -3,6 +3,7 @@
 #include <memory>
 
 #include "app/output_dir.h"
+#include "app/output_options.h"
 #include "app/run_checks.h"
 
 namespace hullopt::app {
@@ -42,6 +43,12 @@ void AddAllCommands(CLI::App& app) {
   ResetForceOption();
   for (const char* name : {"section", "rao", "coefficients", "design", "evaluate", "optimize", "explore", "calibrate"})
     AddForceOption(app.get_subcommand(name));
+  // --quiet on every command (campaigns have their own), --no-plots on the single-run commands that draw
+  // figures (campaigns: AddCampaignCommand).
+  ResetOutputOptions();
+  for (CLI::App* command : app.get_subcommands({}))
+    if (command->get_option_no_throw("--quiet") == nullptr) AddQuietOption(command);
+  for (const char* name : {"rao", "design", "evaluate"}) AddNoPlotsOption(app.get_subcommand(name));
 }
 
 }  // namespace hullopt::app

@@ -22,4 +22,4 @@ for i in $(seq 1 "$repeat"); do
 done
 median=$(printf '%s\n' "${times[@]}" | sort -g | awk '{a[NR]=$1} END {print (NR % 2) ? a[(NR+1)/2] : (a[NR/2] + a[NR/2+1]) / 2}')
 printf 'hullopt %s: %d runs on %d cores (OMP_NUM_THREADS=%s), wall [s]: %s; median %.2f s\n' "$*" "$repeat" \
-  "$(nproc)" "${OMP_NUM_THREADS:-unset}" "$(printf '%.2f ' "${times[@]}")" "$median"
+  "$(nproc --all)" "${OMP_NUM_THREADS:-unset}" "$(printf '%.2f ' "${times[@]}")" "$median"

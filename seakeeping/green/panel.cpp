@@ -26,13 +26,85 @@ std::vector<double> ArcLength(const std::vector<Point>& c) {
   return s;
 }
 
-Point PointAt(const std::vector<Point>& c, const std::vector<double>& s, double si) {
+// std::upper_bound on a sorted vector, walked from the previous answer: O(1) a call when the values asked
+// move in small steps (a sweep), the same index as the binary search (which is taken for NaN).
+class SortedCursor {
+ public:
+  explicit SortedCursor(const std::vector<double>& v) : v_(v) {}
+  int FirstAbove(double x) {
+    if (std::isnan(x)) return static_cast<int>(std::upper_bound(v_.begin(), v_.end(), x) - v_.begin());
+    while (i_ > 0 && v_[i_ - 1] > x) --i_;
+    while (i_ < static_cast<int>(v_.size()) && v_[i_] <= x) ++i_;
+    return i_;
+  }
+
+ private:
+  const std::vector<double>& v_;
+  int i_ = 0;
+};
+
+// The point at arc length si along the polyline c (cumulative arc length s); `cursor` walks s.
+Point PointAt(const std::vector<Point>& c, const std::vector<double>& s, double si, SortedCursor& cursor) {
   const std::size_t nv = c.size();
-  const std::size_t k = std::clamp<std::size_t>(
-      static_cast<std::size_t>(std::upper_bound(s.begin(), s.end(), si) - s.begin()), 1, nv - 1);
+  const std::size_t k = std::clamp<std::size_t>(static_cast<std::size_t>(cursor.FirstAbove(si)), 1, nv - 1);
   const double seg = s[k] - s[k - 1];
   const double f = seg > 0 ? std::clamp((si - s[k - 1]) / seg, 0.0, 1.0) : 0.0;
   return Point{c[k - 1][0] + f * (c[k][0] - c[k - 1][0]), c[k - 1][1] + f * (c[k][1] - c[k - 1][1])};
+}
+
+// std::lround(x) without the libm call for 0 <= x < 2^30 (x − floor(x) is exact there), std::lround
+// otherwise.
+int RoundHalfUp(double x) {
+  if (!(x >= 0.0 && x < 1073741824.0)) return static_cast<int>(std::lround(x));
+  const double f = std::floor(x);
+  return static_cast<int>(f) + (x - f >= 0.5 ? 1 : 0);
+}
+
+// Where hypot(dx, dz) lies against a distance r > 0, read from the squares dx² + dz² and r² where they settle
+// it: the squares carry a few rounding units, so a relative gap of 1e-9 decides; nearer the tie, or where the
+// squares could underflow or overflow, kUnsure (the caller then takes hypot itself). Comparing lengths this
+// way costs a multiply-add instead of a libm hypot and gives the same decisions as comparing hypot.
+enum class Side { kBelow, kAbove, kUnsure };
+
+Side SideOf(double d2, double r) {
+  constexpr double kMargin = 1e-9, kTiny = 1e-290, kHuge = 1e290;
+  const double r2 = r * r;
+  if (!(d2 > kTiny && d2 < kHuge && r2 > kTiny && r2 < kHuge)) return Side::kUnsure;  // NaN too
+  if (d2 < r2 * (1.0 - kMargin)) return Side::kBelow;
+  if (d2 > r2 * (1.0 + kMargin)) return Side::kAbove;
+  return Side::kUnsure;
+}
+
+double Squared(const Point& a, const Point& b) {
+  const double dy = a[0] - b[0], dz = a[1] - b[1];
+  return dy * dy + dz * dz;
+}
+
+// A piece of contour whose direction turns by Θ in all (the sum of its |kinks|) has a chord of at least its
+// length × cos(Θ/2). So two of its points are across a fold (chord < length / fold_ratio) only where the
+// contour turns between them by more than this (1e-6 rad below the bound, far above the rounding of sums of
+// kinks); -1 where every pair has to be looked at (fold_ratio <= 1).
+double FoldTurn(double fold_ratio) {
+  return fold_ratio > 1.0 && std::isfinite(fold_ratio) ? 2.0 * std::acos(1.0 / fold_ratio) - 1e-6 : -1.0;
+}
+
+// Cumulative |turning| of the polyline c (arc length s, vertex kinks `kink`) at the arc positions `at`
+// (increasing): every vertex up to the position counts, an upper bound on the turning from the keel there.
+// Empty where the kinks may miss turning (a segment so short, or a contour so large, that the products in
+// Kink underflow or overflow; a repeated point has no direction): then no pair may be skipped.
+std::vector<double> TurningAt(const std::vector<double>& s, const std::vector<double>& kink,
+                              const std::vector<double>& at) {
+  if (!(s.back() < 1e100)) return {};
+  for (std::size_t k = 1; k < s.size(); ++k)
+    if (!(s[k] - s[k - 1] > 1e-100)) return {};
+  std::vector<double> turned(at.size(), 0.0);
+  double sum = 0.0;
+  std::size_t k = 1;
+  for (std::size_t m = 0; m < at.size(); ++m) {
+    while (k + 1 < s.size() && s[k] <= at[m]) sum += std::fabs(kink[k++]);
+    turned[m] = sum;
+  }
+  return turned;
 }
 
 // Folds thinner than `limit` (a fin whose two faces lie closer than `limit` though far apart along the
@@ -44,14 +116,41 @@ std::vector<Point> CutThinFolds(const std::vector<Point>& c, double limit, doubl
   const double S = s.back();
   const int M = 200;
   std::vector<Point> p(M + 1);
-  for (int m = 0; m <= M; ++m) p[m] = PointAt(c, s, S * m / M);
+  std::vector<double> sp(M + 1);
+  SortedCursor along_s(s);
+  for (int m = 0; m <= M; ++m) sp[m] = S * m / M, p[m] = PointAt(c, s, sp[m], along_s);
   std::vector<std::array<double, 2>> cuts;  // [s_a, s_b] removed
+  // Whether q lies across a thin part from m: closer than `limit` in space and fold_ratio times farther along
+  // the contour. The squares settle it for all but near-ties (SideOf); hypot only for those. Most candidates
+  // are farther than `limit`: one comparison of squares drops them (margin 1e-9 over their rounding, where
+  // the squares can neither underflow nor overflow).
+  const bool squares_ok = limit >= 1e-100 && limit <= 1e100 && S <= 1e100;
+  const double limit2 = limit * limit * (1.0 + 1e-9);
+  auto across = [&](int m, int q) {
+    const double d2 = Squared(p[q], p[m]);
+    if (squares_ok && d2 > limit2) return false;
+    const double along = S * (q - m) / M;
+    const Side near = SideOf(d2, limit);
+    if (near == Side::kAbove) return false;
+    const Side folded = fold_ratio > 0.0 && along > 0.0 ? SideOf(d2, along / fold_ratio) : Side::kUnsure;
+    if (folded == Side::kAbove) return false;
+    if (near == Side::kBelow && folded == Side::kBelow) return true;
+    const double d = std::hypot(p[q][0] - p[m][0], p[q][1] - p[m][1]);
+    return d < limit && along > fold_ratio * std::max(d, 1e-300);
+  };
+  // Only points past enough turning can be across (FoldTurn): for a hull section, none or a few per point.
+  std::vector<double> kink(c.size(), 0.0);
+  for (std::size_t k = 1; k + 1 < c.size(); ++k) kink[k] = Kink(c, k);
+  const std::vector<double> turned = TurningAt(s, kink, sp);
+  const double fold_turn = FoldTurn(fold_ratio);
+  const bool prune = fold_turn > 0.0 && !turned.empty() && std::isfinite(turned.back());
+  SortedCursor by_turning(turned);
   for (int m = 0; m <= M; ++m) {
     if (!cuts.empty() && S * m / M <= cuts.back()[1]) continue;
     int partner = -1;
-    for (int q = M; q > m; --q) {  // the farthest point across: the whole fin goes
-      const double d = std::hypot(p[q][0] - p[m][0], p[q][1] - p[m][1]);
-      if (d < limit && S * (q - m) / M > fold_ratio * std::max(d, 1e-300)) {
+    const int q_end = prune ? std::max(by_turning.FirstAbove(turned[m] + fold_turn) - 1, m) : m;
+    for (int q = M; q > q_end; --q) {  // the farthest point across: the whole fin goes
+      if (across(m, q)) {
         partner = q;
         break;
       }
@@ -65,8 +164,9 @@ std::vector<Point> CutThinFolds(const std::vector<Point>& c, double limit, doubl
     while (g < cuts.size() && s[i] > cuts[g][1]) ++g;
     if (g < cuts.size() && s[i] >= cuts[g][0]) {
       if (out.empty() || s[i - 1] < cuts[g][0]) {  // entering the cut: its root on both faces
-        out.push_back(PointAt(c, s, cuts[g][0]));
-        out.push_back(PointAt(c, s, cuts[g][1]));
+        SortedCursor from_start(s);
+        out.push_back(PointAt(c, s, cuts[g][0], from_start));
+        out.push_back(PointAt(c, s, cuts[g][1], from_start));
       }
       continue;
     }
@@ -90,7 +190,11 @@ std::vector<Panel> PanelSymmetricSection(const std::vector<std::array<double, 2>
   // Drop repeated points (zero-length segments have no direction).
   std::vector<Point> c{raw.front()};
   for (std::size_t i = 1; i < raw.size(); ++i)
-    if (std::hypot(raw[i][0] - c.back()[0], raw[i][1] - c.back()[1]) > 1e-12 * scale) c.push_back(raw[i]);
+    if (const Side side = SideOf(Squared(raw[i], c.back()), 1e-12 * scale);
+        side == Side::kAbove ||
+        (side == Side::kUnsure &&
+         std::hypot(raw[i][0] - c.back()[0], raw[i][1] - c.back()[1]) > 1e-12 * scale))
+      c.push_back(raw[i]);
   if (c.size() < 2) throw std::invalid_argument("section contour has zero girth");
   c.front()[0] = 0.0;
   c.back()[1] = 0.0;
@@ -105,13 +209,8 @@ std::vector<Panel> PanelSymmetricSection(const std::vector<std::array<double, 2>
   const double S = s.back();
   if (!(S > 0)) throw std::invalid_argument("section contour has zero girth");
   for (std::size_t k = 1; k + 1 < nv; ++k) kink[k] = Kink(c, k);
-  auto at = [&](double si) {
-    const std::size_t k = std::clamp<std::size_t>(
-        static_cast<std::size_t>(std::upper_bound(s.begin(), s.end(), si) - s.begin()), 1, nv - 1);
-    const double seg = s[k] - s[k - 1];
-    const double f = seg > 0 ? std::clamp((si - s[k - 1]) / seg, 0.0, 1.0) : 0.0;
-    return Point{c[k - 1][0] + f * (c[k][0] - c[k - 1][0]), c[k - 1][1] + f * (c[k][1] - c[k - 1][1])};
-  };
+  SortedCursor along_s(s);
+  auto at = [&](double si) { return PointAt(c, s, si, along_s); };
   const int nh = n_panels / 2;
   const double H = S / nh;  // uniform spacing
 
@@ -132,14 +231,35 @@ std::vector<Panel> PanelSymmetricSection(const std::vector<std::array<double, 2>
   const int M = std::max(400, 40 * nh);
   std::vector<double> sg(M + 1), density(M + 1);
   for (int m = 0; m <= M; ++m) sg[m] = S * m / M;
-  // Smooth turning |Θ|(s) at the grid points, cumulative: each non-corner vertex's |kink| spread linearly over
-  // the halves of its two segments.
+  // Smooth turning |Θ|(s) at the grid points, cumulative: each non-corner vertex's |kink| spread linearly
+  // over the halves of its two segments. In linear time: at grid point m the vertices (in order) whose ramp
+  // is complete add |kink| each, a running sum kept vertex by vertex (`full`); those whose ramp has begun but
+  // not ended are added term by term after it; the rest add nothing. That is the same sum in the same order
+  // as adding every vertex's term at every m.
   std::vector<double> turn_at(M + 1, 0.0);
-  for (std::size_t k = 1; k + 1 < nv; ++k) {
-    if (is_corner[k] || kink[k] == 0.0) continue;
-    const double a = 0.5 * (s[k - 1] + s[k]), b = 0.5 * (s[k] + s[k + 1]);
-    const int m0 = std::clamp(static_cast<int>(std::floor(a / S * M)), 0, M);
-    for (int m = m0; m <= M; ++m) turn_at[m] += std::fabs(kink[k]) * std::clamp((sg[m] - a) / (b - a), 0.0, 1.0);
+  {
+    struct Ramp {
+      double a, b, abs_kink;
+      int m0;
+    };
+    std::vector<Ramp> ramps;
+    for (std::size_t k = 1; k + 1 < nv; ++k) {
+      if (is_corner[k] || kink[k] == 0.0) continue;
+      const double a = 0.5 * (s[k - 1] + s[k]), b = 0.5 * (s[k] + s[k + 1]);
+      ramps.push_back({a, b, std::fabs(kink[k]), std::clamp(static_cast<int>(std::floor(a / S * M)), 0, M)});
+    }
+    auto term = [&](const Ramp& r, int m) {
+      return r.abs_kink * std::clamp((sg[m] - r.a) / (r.b - r.a), 0.0, 1.0);
+    };
+    std::size_t done = 0, begun = 0;  // ramps [0, done) complete at m, [done, begun) begun
+    double full = 0.0;                // the running sum over the complete ones
+    for (int m = 0; m <= M; ++m) {
+      while (begun < ramps.size() && ramps[begun].m0 <= m) ++begun;
+      while (done < begun && term(ramps[done], m) == ramps[done].abs_kink) full += ramps[done++].abs_kink;
+      double t = full;
+      for (std::size_t j = done; j < begun; ++j) t += term(ramps[j], m);
+      turn_at[m] = t;
+    }
   }
   // Local thickness on a coarser grid: the nearest contour point (of the half contour or its mirror image)
   // that is much farther along the contour than in space lies across a thin part.
@@ -147,13 +267,61 @@ std::vector<Panel> PanelSymmetricSection(const std::vector<std::array<double, 2>
   std::vector<Point> pt(Mt + 1);
   std::vector<double> st(Mt + 1), thick(Mt + 1, std::numeric_limits<double>::infinity());
   for (int m = 0; m <= Mt; ++m) st[m] = S * m / Mt, pt[m] = at(st[m]);
+  // Which pairs to look at. A thickness t acts only where thickness_fraction × t < H (below that h <= H
+  // already), i.e. t < reach = H / thickness_fraction. And a piece of contour whose direction turns by Θ in
+  // all has a chord of at least its length × cos(Θ/2), so q is across a fold from m (chord < length /
+  // fold_ratio) only where the contour turns by more than 2 acos(1 / fold_ratio) between them: with the
+  // cumulative |turning| K at the points (an upper bound: every vertex up to the point counts), those q are
+  // an index range at either end (same side) or at the waterline end (through the keel, whose own kink adds).
+  // Of the q looked at, the squares drop those certainly farther than reach, than the nearest so far or than
+  // along / fold_ratio (a relative margin of 1e-9 over their rounding, where they can neither underflow nor
+  // overflow, checked once); hypot and the original test for the rest. Each thickness that can act is thus
+  // the nearest distance over all points, bit for bit; the others stay infinite or too large to act. For a
+  // hull section (turning well under 2 acos(1/3) = 141° on one side) that is a few pairs per point.
+  const double reach = spacing.thickness_fraction > 0.0 ? H / spacing.thickness_fraction * (1.0 + 1e-6)
+                                                        : std::numeric_limits<double>::infinity();
+  const double kMargin = 1.0 + 1e-9;
+  const bool squares_ok = S / Mt > 1e-100 && S < 1e100 && spacing.fold_ratio >= 1e-50 &&
+                          spacing.fold_ratio <= 1e50 && (reach >= 1e-100 || !std::isfinite(reach));
+  const double reach2 = std::isfinite(reach) ? reach * reach : std::numeric_limits<double>::infinity();
+  const double inv_fold2 = 1.0 / (spacing.fold_ratio * spacing.fold_ratio);
+  const double max_turn = FoldTurn(spacing.fold_ratio);
+  const std::vector<double> turned = TurningAt(s, kink, st);
+  const double dy0 = c[1][0] - c[0][0], dz0 = c[1][1] - c[0][1];
+  const double keel_turn =
+      std::fabs(std::atan2(2.0 * dy0 * dz0, dy0 * dy0 - dz0 * dz0));  // mirror image → contour
+  const bool prune =
+      max_turn > 0.0 && !turned.empty() && std::isfinite(turned.back()) && std::isfinite(keel_turn);
+  SortedCursor below_m(turned), above_m(turned), through_keel(turned);
   for (int m = 0; m <= Mt; ++m) {
-    for (int q = 0; q <= Mt; ++q) {
-      const double d_same = std::hypot(pt[q][0] - pt[m][0], pt[q][1] - pt[m][1]);
-      if (std::fabs(st[q] - st[m]) > spacing.fold_ratio * d_same) thick[m] = std::min(thick[m], d_same);
-      const double d_mirror = std::hypot(pt[q][0] + pt[m][0], pt[q][1] - pt[m][1]);  // arc through the keel
-      if (st[q] + st[m] > spacing.fold_ratio * d_mirror) thick[m] = std::min(thick[m], d_mirror);
+    const Point mirror{-pt[m][0], pt[m][1]};  // pt[m]'s mirror image: d_mirror is its distance to pt[q]
+    double thick2 = std::numeric_limits<double>::infinity();  // thick[m]² while it is a safe bound
+    auto consider = [&](int q, bool mirrored) {
+      if (!mirrored && q == m) return;  // along = 0: never across
+      const double along = mirrored ? st[q] + st[m] : std::fabs(st[q] - st[m]);
+      if (squares_ok && Squared(pt[q], mirrored ? mirror : pt[m]) >
+                            std::min(std::min(reach2, along * along * inv_fold2), thick2) * kMargin)
+        return;
+      const double d = mirrored
+                           ? std::hypot(pt[q][0] + pt[m][0], pt[q][1] - pt[m][1])  // arc through the keel
+                           : std::hypot(pt[q][0] - pt[m][0], pt[q][1] - pt[m][1]);
+      if (along > spacing.fold_ratio * d) {
+        thick[m] = std::min(thick[m], d);
+        thick2 = thick[m] > 1e-100 ? thick[m] * thick[m] : std::numeric_limits<double>::infinity();
+      }
+    };
+    if (!prune) {
+      for (int q = 0; q <= Mt; ++q) consider(q, false), consider(q, true);
+      continue;
     }
+    // Same side: K[q] < K[m] − max_turn (towards the keel) or K[q] > K[m] + max_turn (towards the waterline).
+    const int below =
+        below_m.FirstAbove(turned[m] - max_turn) - 1;  // a superset of the first range: 0 .. below
+    for (int q = 0; q <= std::min(below + 1, Mt); ++q) consider(q, false);
+    for (int q = above_m.FirstAbove(turned[m] + max_turn); q <= Mt; ++q) consider(q, false);
+    // Through the keel: K[m] + keel turn + K[q] > max_turn.
+    for (int q = through_keel.FirstAbove(max_turn - keel_turn - turned[m]) - 1; q <= Mt; ++q)
+      if (q >= 0) consider(q, true);
   }
   std::vector<double> ends{S};  // grading targets: the waterline and every corner
   for (std::size_t k : corners) ends.push_back(s[k]);
@@ -161,7 +329,7 @@ std::vector<Panel> PanelSymmetricSection(const std::vector<std::array<double, 2>
   for (int m = 0; m <= M; ++m) {
     double h = H;
     const double lo = std::max(0.0, sg[m] - w), hi = std::min(S, sg[m] + w);
-    const int mlo = static_cast<int>(std::lround(lo / S * M)), mhi = static_cast<int>(std::lround(hi / S * M));
+    const int mlo = RoundHalfUp(lo / S * M), mhi = RoundHalfUp(hi / S * M);
     const double kappa = hi > lo ? (turn_at[mhi] - turn_at[mlo]) / (hi - lo) : 0.0;
     if (kappa > 0) h = std::min(h, spacing.max_turn_rad / kappa);
     const double x = sg[m] / S * Mt;
@@ -212,9 +380,18 @@ std::vector<Panel> PanelSymmetricSection(const std::vector<std::array<double, 2>
   // Turning of the contour strictly inside each panel (vertices on its end points, corners among them, are
   // the kinks between chords and stay out).
   std::vector<double> turn(nh, 0.0);
+  const bool sorted_nodes = std::is_sorted(node_s.begin(), node_s.end());
   for (std::size_t k = 1; k + 1 < nv; ++k) {
     const double tol = 1e-9 * S;
-    for (int i = 0; i < nh; ++i)
+    // With the end points in order only the panel whose span holds s[k] can hold it strictly inside.
+    const int first =
+        sorted_nodes
+            ? std::clamp(
+                  static_cast<int>(std::upper_bound(node_s.begin(), node_s.end(), s[k]) - node_s.begin()) - 1,
+                  0, nh - 1)
+            : 0;
+    const int last = sorted_nodes ? first : nh - 1;
+    for (int i = first; i <= last; ++i)
       if (s[k] > node_s[i] + tol && s[k] < node_s[i + 1] - tol) turn[i] += kink[k];
   }
   std::vector<Panel> panels;

@@ -49,12 +49,12 @@ bool RaoSolverOptions::IsValid(std::string* error) const {
 
 StripKernel BuildHullStripKernel(const hull::HullForm& hull, const RaoSolverOptions& options,
                                  double speed_m_s, double rho_kg_m3, double g_m_s2,
-                                 const StripKernelBuilder& builder) {
+                                 const StripKernelBuilder& builder, const StripKernel* geometry) {
   std::string err;
   if (!options.IsValid(&err)) throw std::invalid_argument(err);
   StripGeometryOptions g = options.Geometry();
   if (options.interaction || (hull.bodies.size() == 1 && hull.bodies[0].y_centre_m == 0.0)) {
-    StripKernel k = StripKernelGeometry(hull, g, speed_m_s, rho_kg_m3, g_m_s2);
+    StripKernel k = geometry ? *geometry : StripKernelGeometry(hull, g, speed_m_s, rho_kg_m3, g_m_s2);
     builder(&k);
     return k;
   }
@@ -79,20 +79,20 @@ struct RaoSweeper::State {
 
 RaoSweeper::RaoSweeper(const hull::HullForm& hull, const hull::MassProperties& mass, double speed_m_s,
                        double rho_kg_m3, double g_m_s2, const RaoSolverOptions& options,
-                       const StripKernelBuilder& builder)
+                       const StripKernelBuilder& builder, const StripKernel* geometry)
     : s_(std::make_unique<State>()) {
   s_->options = options;
   if (options.method == RaoSolverOptions::Method::kStripTheory) {
     std::string err;
     if (!options.IsValid(&err)) throw std::invalid_argument(err);
     StripGeometryOptions g = options.Geometry();  // the same strip stations as the time-domain method
-    s_->kernel = StripKernelGeometry(hull, g, speed_m_s, rho_kg_m3, g_m_s2);
+    s_->kernel = geometry ? *geometry : StripKernelGeometry(hull, g, speed_m_s, rho_kg_m3, g_m_s2);
     s_->model = std::make_unique<HeadSeaShipModel>(s_->kernel, mass, options.motion);
     s_->rows = FrequencyDomainSectionRows(s_->kernel, options.panels, options.interaction,
                                           options.section_formulation);
     return;
   }
-  s_->kernel = BuildHullStripKernel(hull, options, speed_m_s, rho_kg_m3, g_m_s2, builder);
+  s_->kernel = BuildHullStripKernel(hull, options, speed_m_s, rho_kg_m3, g_m_s2, builder, geometry);
   s_->model = std::make_unique<HeadSeaShipModel>(s_->kernel, mass, options.motion);
 }
 
@@ -123,8 +123,9 @@ std::vector<std::string> RaoSweeper::Warnings(const RaoTable& t, const std::stri
 
 RaoTable ComputeRaos(const hull::HullForm& hull, const hull::MassProperties& mass, double speed_m_s,
                      double rho_kg_m3, double g_m_s2, const std::vector<double>& omega_rad_s,
-                     const RaoSolverOptions& options, const StripKernelBuilder& builder) {
-  const RaoSweeper sweeper(hull, mass, speed_m_s, rho_kg_m3, g_m_s2, options, builder);
+                     const RaoSolverOptions& options, const StripKernelBuilder& builder,
+                     const StripKernel* geometry) {
+  const RaoSweeper sweeper(hull, mass, speed_m_s, rho_kg_m3, g_m_s2, options, builder, geometry);
   RaoTable t = sweeper.Solve(omega_rad_s);
   t.warnings = sweeper.Warnings(t, kGridAdvice);
   return t;

@@ -49,10 +49,12 @@ struct RaoSolverOptions {
 };
 
 /// The strip kernel of the hull at speed U (all bodies together, or body by body without interaction and
-/// combined). Throws as StripKernelGeometry and the builder do.
+/// combined). Throws as StripKernelGeometry and the builder do. `geometry`, when given, is
+/// StripKernelGeometry(hull, options.Geometry(), speed, ρ, g) already made (a caller that checked the
+/// sections first): it is used instead of panelling the sections again where all bodies share the strips.
 StripKernel BuildHullStripKernel(const hull::HullForm& hull, const RaoSolverOptions& options,
                                  double speed_m_s, double rho_kg_m3, double g_m_s2,
-                                 const StripKernelBuilder& builder);
+                                 const StripKernelBuilder& builder, const StripKernel* geometry = nullptr);
 
 /// The RAO solver with its frequency-independent set-up done once (the strip kernel of the time-domain strip
 /// method, or strip theory's strip geometry and 2D section set-up), so that an adaptive frequency grid solves
@@ -60,9 +62,11 @@ StripKernel BuildHullStripKernel(const hull::HullForm& hull, const RaoSolverOpti
 /// bitwise, without the warnings (Warnings() adds them for a table).
 class RaoSweeper {
  public:
-  /// Throws as ComputeRaos does for bad options or a hull that cannot be solved.
+  /// Throws as ComputeRaos does for bad options or a hull that cannot be solved. `geometry`: as for
+  /// BuildHullStripKernel.
   RaoSweeper(const hull::HullForm& hull, const hull::MassProperties& mass, double speed_m_s, double rho_kg_m3,
-             double g_m_s2, const RaoSolverOptions& options, const StripKernelBuilder& builder);
+             double g_m_s2, const RaoSolverOptions& options, const StripKernelBuilder& builder,
+             const StripKernel* geometry = nullptr);
   ~RaoSweeper();
   RaoSweeper(RaoSweeper&&) noexcept;
   RaoSweeper& operator=(RaoSweeper&&) noexcept;
@@ -77,12 +81,13 @@ class RaoSweeper {
   std::unique_ptr<State> s_;
 };
 
-/// RAOs at the wave frequencies omega_rad_s (increasing, > 0), with StripKernelWarnings in `warnings`. Throws std::invalid_argument for bad options,
-/// speed or frequencies, std::domain_error for a hull that cannot be solved or non-finite results (naming the
-/// hull and frequency).
+/// RAOs at the wave frequencies omega_rad_s (increasing, > 0), with StripKernelWarnings in `warnings`. Throws
+/// std::invalid_argument for bad options, speed or frequencies, std::domain_error for a hull that cannot be
+/// solved or non-finite results (naming the hull and frequency). `geometry`: as for BuildHullStripKernel.
 RaoTable ComputeRaos(const hull::HullForm& hull, const hull::MassProperties& mass, double speed_m_s,
                      double rho_kg_m3, double g_m_s2, const std::vector<double>& omega_rad_s,
-                     const RaoSolverOptions& options, const StripKernelBuilder& builder);
+                     const RaoSolverOptions& options, const StripKernelBuilder& builder,
+                     const StripKernel* geometry = nullptr);
 
 /// Largest ω_e Δt (Δt = Δx/U, the strip step) at which coefficients are given: π/4, 8 strip steps per
 /// encounter period. The strip force is periodic in ω_e with period 2π/Δt (aliased beyond ω_e Δt = π), and the

@@ -90,3 +90,31 @@ TEST_CASE("panels on a thin plate shrink to its thickness as the count allows", 
     }
   }
 }
+
+TEST_CASE("a fold thinner than the cut limit is cut at its root, a thicker one kept", "[panel]") {
+  // Bottom 1 m out from the keel at 0.5 m depth, a plate sticking out from y = 0.4 m to the bottom's edge and
+  // back (thickness e, a fold turning 180° in two corners), then the strut face up to the waterline. Half
+  // girth about 2.3 m; 14 panels: the cut limit is 0.1 x 2.3 / 7 = 0.033 m. A 0.005 m plate is cut across
+  // its root, so no panel reaches beyond y = 0.4 m by more than the limit; a 0.2 m plate is kept whole and
+  // its outer edge (y = 1 m) is a panel end point.
+  auto contour = [](double e) {
+    return std::vector<std::array<double, 2>>{
+        {0.0, -0.5}, {1.0, -0.5}, {1.0, -0.5 + e}, {0.4, -0.5 + e}, {0.4, 0.0}};
+  };
+  const double limit = 0.1 * 2.3 / 7;  // cut_thickness_fraction x uniform spacing (PanelSpacing defaults)
+  auto reach = [](const std::vector<hullopt::sk::Panel>& ps) {
+    double y = 0;
+    for (const auto& p : ps) y = std::max({y, p.y1, p.y2});
+    return y;
+  };
+  const auto thin = PanelSymmetricSection(contour(0.005), 14);
+  const auto thick = PanelSymmetricSection(contour(0.2), 14);
+  REQUIRE(thin.size() == 14);
+  REQUIRE(thick.size() == 14);
+  CHECK(reach(thin) < 0.4 + 2 * limit);
+  CHECK(reach(thick) == 1.0);  // the plate's outer corner, exactly
+  // Without cutting the thin plate stays (its corner is a panel end point).
+  hullopt::sk::PanelSpacing keep;
+  keep.cut_thickness_fraction = 0.0;
+  CHECK(reach(PanelSymmetricSection(contour(0.005), 14, 0.0, keep)) == 1.0);
+}
