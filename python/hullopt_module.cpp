@@ -312,10 +312,12 @@ PYBIND11_MODULE(_hullopt, m) {
   m.def(
       "calm_water",
       [](const hull::HullForm& h, const hull::MassProperties& mass, double speed_m_s, const std::string& sectional_force,
-         int sections, int panels, int body, const py::object& attitude, bool elevation, const py::object& water) {
+         int sections, int panels, int body, const py::object& attitude, bool elevation, bool wave_resistance,
+         const py::object& water) {
         const io::WaterOptions w = WaterOf(water);
         sk::CalmWaterOptions o;
         o.elevation = elevation;
+        o.wave_resistance = wave_resistance;
         if (sectional_force != "momentum" && sectional_force != "pressure")
           throw std::invalid_argument("sectional_force must be 'momentum' or 'pressure', got '" + sectional_force + "'");
         o.sectional_force = sectional_force == "pressure" ? sk::SectionalForce::kPressure : sk::SectionalForce::kMomentum;
@@ -327,6 +329,7 @@ PYBIND11_MODULE(_hullopt, m) {
           d["x_m"] = Array(f.x_m), d["force_N_per_m"] = Array(f.force_N_per_m),
           d["buoyancy_N_per_m"] = Array(f.buoyancy_N_per_m);
           if (elevation) d["elevation_outer_m"] = Array(f.elevation_outer_m), d["elevation_inner_m"] = Array(f.elevation_inner_m);
+          if (wave_resistance) d["power_W_per_m"] = Array(f.power_W_per_m), d["wave_resistance_N"] = f.wave_resistance_N;
         };
         if (!attitude.is_none()) {  // the force at a given (sinkage_m + down, trim_deg + bow up)
           const auto a = attitude.cast<std::pair<double, double>>();
@@ -353,12 +356,14 @@ PYBIND11_MODULE(_hullopt, m) {
       },
       py::arg("hull"), py::arg("mass"), py::arg("speed_m_s"), py::arg("sectional_force") = "momentum",
       py::arg("sections") = 40, py::arg("panels") = 14, py::arg("body") = -1, py::arg("attitude") = py::none(),
-      py::arg("elevation") = false, py::arg("water") = py::none(),
+      py::arg("elevation") = false, py::arg("wave_resistance") = false, py::arg("water") = py::none(),
       "Calm water on the strips of the instantaneous hull at speed_m_s [m/s]: the running sinkage_m (+ down, at "
       "the LCG) and trim_deg (+ bow up) where the steady force and moment vanish, with the steady sectional force "
       "force_N_per_m along x_m (bow first). attitude=(sinkage_m, trim_deg) gives the steady force at that "
       "attitude instead of iterating. elevation=True adds elevation_outer_m and elevation_inner_m, the steady "
-      "free-surface elevation at the water line beside each station (+ up; inner: multihulls only). The hull as "
+      "free-surface elevation at the water line beside each station (+ up; inner: multihulls only). "
+      "wave_resistance=True adds wave_resistance_N, the linear 2D+t wave resistance, and power_W_per_m, the "
+      "power each station's strip contour delivers to the water (docs/ship-motions.md). The hull as "
       "given floats at rest (its weight is its buoyancy at rest).");
 
   m.def(

@@ -8,6 +8,7 @@
 #include "seakeeping/motions/instantaneous_sections.h"
 #include "seakeeping/strip/contour_motion.h"
 #include "seakeeping/strip/strip_marcher.h"
+#include "seakeeping/strip/strip_power.h"
 
 namespace hullopt::sk {
 namespace {
@@ -133,6 +134,10 @@ SteadyForce CalmWaterForce(const hull::HullForm& at_rest, const hull::MassProper
     r.heave_N += (f + buoyancy - weight) * w;
     r.moment_N_m -= lever * (f + buoyancy - weight) * w;
   }
+  if (options.wave_resistance) {
+    r.power_W_per_m = StripPower(ops, marcher.Sources(), motions);
+    for (int n = 0; n < steps; ++n) r.wave_resistance_N += r.power_W_per_m[n] * grid.weight_m[n] / speed_m_s;
+  }
   if (options.elevation) {
     r.elevation_outer_m = SideElevation(panels, motions, sources, dt, rho_kg_m3, g_m_s2, true);
     r.elevation_inner_m = SideElevation(panels, motions, sources, dt, rho_kg_m3, g_m_s2, false);
@@ -147,8 +152,9 @@ CalmWaterResult SolveRunningAttitude(const hull::HullForm& at_rest, const hull::
   const CellFaceStations grid = CellFaceGrid(at_rest, options.geometry.sections);
   CalmWaterResult r;
   r.attitude.pivot_x_m = mass.lcg_m_from_ap;
-  CalmWaterOptions iterate = options;  // the elevation only at the converged attitude
+  CalmWaterOptions iterate = options;  // the elevation and resistance only at the converged attitude
   iterate.elevation = false;
+  iterate.wave_resistance = false;
   for (int it = 1; it <= options.max_iterations; ++it) {
     r.iterations = it;
     hull::HullForm hull;

@@ -40,6 +40,10 @@ struct CalmWaterOptions {
   /// Also the steady elevation at the hull's water line (SteadyForce::elevation_*): one more set of strip
   /// operators per side. SolveRunningAttitude computes it at the converged attitude only.
   bool elevation = false;
+  /// Also the 2D+t wave resistance (SteadyForce::wave_resistance_N, strip_power.h): the power of the strips'
+  /// dynamic pressure on the moving contours, about ten times the cost of the force alone.
+  /// SolveRunningAttitude computes it at the converged attitude only.
+  bool wave_resistance = false;
   bool IsValid(std::string* error) const;
 };
 
@@ -56,6 +60,11 @@ struct SteadyForce {
   /// water line of each station, + up, on the outer side of the bodies and (multihulls) on the inner side (the
   /// mean of the points of that side); empty without, and for a strip whose sections do not change.
   std::vector<double> elevation_outer_m, elevation_inner_m;
+  /// With options.wave_resistance: the power per unit strip length the contour of each station delivers to the
+  /// water [W/m] (strip_power.h), and R = Σ P_n w_n / U [N], the linear 2D+t wave resistance (the hydrostatic
+  /// force missing on a dry transom is not in it). Empty and 0 without.
+  std::vector<double> power_W_per_m;
+  double wave_resistance_N = 0.0;
 };
 
 struct CalmWaterResult {

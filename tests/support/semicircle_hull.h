@@ -24,14 +24,15 @@ inline double SemicircleRadius(const SemicircleHullShape& s, Taper taper, double
   return s.radius_m;
 }
 
-/// 61 stations of 24 arc segments (the taper is linear, so the strip geometry's interpolation is exact), each
-/// wall-sided 0.05 m above the water line.
-inline hull::HullForm SemicircleHull(const SemicircleHullShape& s, Taper taper) {
+/// 61 stations of 24 arc segments with the radius radius(x) [m] at x [m from the AP], each wall-sided 0.05 m
+/// above the water line.
+template <class Radius>
+hull::HullForm SemicircleHullOf(const SemicircleHullShape& s, Radius radius) {
   hull::Demihull b;
   b.role = "main";
   constexpr int kStations = 61, kArc = 24;
   for (int i = 0; i < kStations; ++i) {
-    const double x = s.length_m * i / (kStations - 1), R = SemicircleRadius(s, taper, x);
+    const double x = s.length_m * i / (kStations - 1), R = radius(x);
     hull::Station st{x, {}, {}};
     for (int k = 0; k <= kArc; ++k) {
       const double a = -0.5 * M_PI * (1.0 - static_cast<double>(k) / kArc);  // keel −π/2 .. waterline 0
@@ -47,6 +48,11 @@ inline hull::HullForm SemicircleHull(const SemicircleHullShape& s, Taper taper) 
   h.length_m = s.length_m;
   h.bodies = {b};
   return h;
+}
+
+/// The tapered hulls (the taper is linear, so the strip geometry's interpolation is exact).
+inline hull::HullForm SemicircleHull(const SemicircleHullShape& s, Taper taper) {
+  return SemicircleHullOf(s, [&](double x) { return SemicircleRadius(s, taper, x); });
 }
 
 }  // namespace hullopt::test
