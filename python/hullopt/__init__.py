@@ -8,7 +8,9 @@ One import names the public objects:
     forced_oscillation                             a forced heave or pitch test on the instantaneous hull
     calm_water                                     the steady force and running sinkage and trim in calm water
     evaluate                                       rms vertical accelerations and MSI in head seas
-    load_design, Design                            a design config as `hullopt evaluate` reads it
+    design, Design                                 a design from Python values (speed_kn= or speed_m_s=), built
+                                                   as the commands build a config's
+    load_design                                    a design config as `hullopt evaluate` reads it
     run                                            any hullopt command in-process (campaigns)
     InputError                                     bad input; the message is the CLI's
 
@@ -22,6 +24,7 @@ from ._hullopt import (  # noqa: F401
     MassProperties,
     __version__,
     compute_raos,
+    design,
     evaluate,
     evaluation_frequencies,
     forced_oscillation,
