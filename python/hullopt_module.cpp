@@ -29,6 +29,7 @@
 #include "io/config/seas_config.h"
 #include "io/config/water_config.h"
 #include "io/config/yaml_map.h"
+#include "optimizer/rao_peak.h"
 #include "io/formats/input_error.h"
 #include "seakeeping/motions/calm_water.h"
 #include "seakeeping/motions/forced_oscillation.h"
@@ -577,6 +578,16 @@ PYBIND11_MODULE(_hullopt, m) {
       "mean. seas: a list of dicts as a config's seas: list (Hs_m [m], Tz_s or Tp_s [s], spectrum, gamma); "
       "msi: a dict as the msi: block. Returns one dict per sea with positions (rms_accel_g [g], msi_pct [%], "
       "...), mean and warnings (the validity envelope's flags of that sea: steepness, rms acceleration above 1 g).");
+
+  m.def(
+      "rao_peak",
+      [](const std::vector<double>& x, const std::vector<double>& y) {
+        const opt::RaoPeak p = opt::InterpolatedPeak(x, y);
+        return py::make_tuple(p.value, p.x, p.at_edge);
+      },
+      py::arg("x"), py::arg("y"),
+      "(value, x, at_edge): the peak of samples y(x) by a parabola through the largest sample and its neighbours, "
+      "as the commands' summaries find it; at_edge when the largest sample is the first or last.");
 
   m.def(
       "evaluation_frequencies", [](int count) { return Array(eval::EvaluationFrequencies(count)); },

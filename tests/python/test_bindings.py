@@ -277,3 +277,46 @@ def test_a_python_design_names_a_bad_key_and_a_bad_value():
     # A rule that needs the hull: the LCG must lie on the generated hull's waterline length.
     with pytest.raises(hullopt.InputError, match="mass.lcg_m_from_ap"):
         hullopt.design(NPL5B, speed_kn=40, mass={"lcg_m_from_ap": 1.0e6})
+
+
+def test_raos_as_a_labelled_dataset_whose_summary_is_the_cli_line(tmp_path):
+    d = hullopt.design(NPL5B, speed_kn=40, solver=SOLVER, name="npl5b")
+    ds = d.rao_dataset(OMEGA)
+    assert ds["heave"].dims == ("omega",) and ds["pitch"].dims == ("omega",)
+    assert ds["omega"].attrs["units"] == "rad/s" and ds["omega_e"].attrs["units"] == "rad/s"
+    assert ds["lambda_over_L"].attrs["units"] == "1"
+    assert ds["heave"].attrs["units"] == "m/m" and ds["pitch"].attrs["units"] == "rad/rad"
+    rao = d.raos(OMEGA)
+    np.testing.assert_array_equal(ds["heave"].values, rao["heave"])
+    np.testing.assert_array_equal(ds["omega"].values, rao["omega_rad_s"])
+    assert ds.attrs["speed_m_s"] == SPEED_M_S
+
+    freqs = ", ".join(str(w) for w in OMEGA)
+    cfg = tmp_path / "npl5b.yaml"
+    cfg.write_text(hull_yaml(f"solver: {{ sections: {SOLVER['sections']}, panels: {SOLVER['panels']}, "
+                             f"Cs: {SOLVER['Cs']}, adaptive_grid: off, frequencies: {{ omega_rad_s: [{freqs}] }} }}\n"))
+    r = run_cli("rao", str(cfg), "--out", str(tmp_path / "rao"))
+    assert r.returncode == 0, r.stderr
+    assert r.stdout.startswith(ds.attrs["summary"] + ";"), (r.stdout, ds.attrs["summary"])
+    assert "summary:      hull 'npl5b': heave peak" in repr(ds)  # the repr shows it (cut at the display width)
+
+
+def test_flags_come_through_pythons_warnings():
+    hull = hullopt.generate_hull(hullopt.DesignVariables(**NPL5B))
+    mass = hullopt.mass_properties(hull)
+    rao = hullopt.compute_raos(hull, mass, 40.0, [0.6, 1.0], solver={"sections": 10, "panels": 6})  # 40 "m/s"
+    with pytest.warns(hullopt.HulloptWarning, match=r"Fn_vol = 4\."):
+        ds = hullopt.rao_dataset(rao, hullopt.hydrostatics(hull)["L_m"])
+    assert "Fn_vol = 4." in ds.attrs["warnings"]
+
+
+def test_an_evaluation_as_a_labelled_dataset():
+    d = hullopt.design(NPL5B, speed_kn=40, solver={"sections": 10, "panels": 6})
+    seas = hullopt.evaluate(d.raos(), d.hull, d.mass, seas=[{"Hs_m": 3.0, "Tz_s": 7.5}, {"Hs_m": 1.5, "Tz_s": 6.25}])
+    ds = hullopt.evaluation_dataset(seas, "npl5b")
+    assert ds["msi_pct"].dims == ("sea", "position")
+    assert list(ds["position"].values) == ["forward", "lcg", "transom", "mean"]
+    assert ds["msi_pct"].attrs["units"] == "%" and ds["rms_accel_g"].attrs["units"] == "g"
+    assert ds["Hs_m"].attrs["units"] == "m" and list(ds["Hs_m"].values) == [3.0, 1.5]
+    assert ds["msi_pct"].sel(position="mean").values[0] == seas[0]["mean"]["msi_pct"]
+    assert ds["rms_accel_g"].sel(position="lcg").values[1] == seas[1]["positions"][1]["rms_accel_g"]
