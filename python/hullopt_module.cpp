@@ -29,8 +29,8 @@
 #include "io/config/seas_config.h"
 #include "io/config/water_config.h"
 #include "io/config/yaml_map.h"
-#include "optimizer/rao_peak.h"
 #include "io/formats/input_error.h"
+#include "optimizer/rao_peak.h"
 #include "seakeeping/motions/calm_water.h"
 #include "seakeeping/motions/forced_oscillation.h"
 
@@ -586,7 +586,8 @@ PYBIND11_MODULE(_hullopt, m) {
         return py::make_tuple(p.value, p.x, p.at_edge);
       },
       py::arg("x"), py::arg("y"),
-      "(value, x, at_edge): the peak of samples y(x) by a parabola through the largest sample and its neighbours, "
+      "(value, x, at_edge): the peak of samples y(x) by a parabola through the largest sample and its "
+      "neighbours, "
       "as the commands' summaries find it; at_edge when the largest sample is the first or last.");
 
   m.def(
