@@ -29,8 +29,11 @@ opt::CsRaoModel MakeCalibrationModel(io::YamlMap& root, const io::CalibrateConfi
         throw io::InputError(root.file() + ": calibrate.hulls['" + hull.name +
                              "']: the strip solver calibrates the config's own hull (the calibrate.data form); "
                              "calibrate several hulls with one config each, or give each a test model");
-      const eval::DesignCase base =
-          io::LoadDesignCase(root, root.file(), "calibration hull", /*read_speed=*/false);
+      io::DesignReadOptions read;
+      read.read_speed = false;  // one design per measured speed
+      io::ParsedDesign parsed = io::ParseDesign(root, root.file(), "calibration hull", read);
+      root.Finish();  // the whole config read and checked before the hull is built and the kernels
+      const eval::DesignCase base = io::BuildParsedDesign(parsed);
       // One kernel per speed, all built and held before the fit; each Cs trial of the fit (at most 100
       // trust-region iterations with a derivative each: 300 sweeps) is a 2 x 2 solve per measured point.
       io::StripWork work = io::StripWorkFromResolved(root.resolved(), 1);

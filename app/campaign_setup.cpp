@@ -28,6 +28,7 @@ LoadedCampaign LoadCampaign(const std::string& config_file, io::CampaignCommand 
                          "objective has no strip resolution to check)");
   block->Finish();
   root.Finish();
+  eval::CheckBaseDesign(*out.evaluator);  // the base design built once the whole config has been checked
   out.config.definition.known_quantities = out.evaluator->QuantityNames();
   out.config.definition.known_variables = out.evaluator->VariableNames();
   io::ValidateCampaign(out.config, command, config_file);

@@ -24,8 +24,9 @@ namespace {
 void RunCoefficients(const std::string& config_file, const std::string& out_dir) {
   auto root = io::YamlMap::LoadFile(config_file);
   const std::string name = io::ParseDesignName(root, std::filesystem::path(config_file).stem().string());
-  eval::DesignCase d = io::LoadDesignCase(root, config_file, name);
-  if (!d.has_frequencies) root.Map("solver").Fail("frequencies", "required: the frequencies of the coefficients");
+  io::ParsedDesign parsed = io::ParseDesign(root, config_file, name);
+  if (!parsed.spec.has_frequencies)
+    root.Map("solver").Fail("frequencies", "required: the frequencies of the coefficients");
   // compare: measured points to draw over the computed curves (io/formats/measured_coefficients_csv.h).
   std::vector<io::MeasuredCoefficientRow> heave, pitch;
   std::vector<io::MeasuredWaveLoadRow> loads;
@@ -43,7 +44,8 @@ void RunCoefficients(const std::string& config_file, const std::string& out_dir)
     trim = c.String("trim_sinkage", trim);
     c.Finish();
   }
-  root.Finish();
+  root.Finish();  // the whole config read and checked before the design is built
+  const eval::DesignCase d = io::BuildParsedDesign(parsed);
   const double L = d.hydrostatics.L_m, g = d.water.g_m_s2;
   const auto omega = sk::WaveFrequencies(d.solver.frequencies, d.speed_m_s, g, L);
   CheckOutputDirConfig(out_dir, "coefficients", root.resolved());

@@ -79,6 +79,11 @@ struct DesignInput {
   std::optional<eval::DesignCase> computed;  // the design when its RAOs are computed here (for the resolution check)
   std::vector<double> omega_rad_s;            // its wave frequencies
   double cs_override = -1.0;
+  // A design read and checked, built once the whole evaluation config has been read (BuildPendingDesigns).
+  std::optional<io::ParsedDesign> pending;
+  YAML::Node pending_resolved;                // its config's resolved tree (the run-cost estimate)
+  std::string pending_file, pending_label;    // its config file; the cost check's label
+  std::vector<std::string> pending_warnings;  // flags of the evaluation's overrides, appended once built
 };
 
 // A design whose RAOs are computed here by the strip solver from `dc` (read from `file`, whose resolved config
@@ -98,10 +103,24 @@ void SetComputedDesign(const eval::DesignCase& dc, const YAML::Node& resolved, c
 
 // A design of the `designs` list given by its own config file (root = that file's map).
 void LoadComputedDesign(io::YamlMap& root, const std::string& file, DesignInput* in, double cs_override) {
-  const eval::DesignCase dc = io::LoadDesignCase(root, file, in->design.name);
+  in->pending = io::ParseDesign(root, file, in->design.name);
   if (root.Has("compare")) root.Skip("compare");  // measured data drawn by rao/coefficients, not used here
   root.Finish();
-  SetComputedDesign(dc, root.resolved(), file, "evaluate: design '" + in->design.name + "'", cs_override, in);
+  in->pending_resolved = root.resolved();
+  in->pending_file = file;
+  in->pending_label = "evaluate: design '" + in->design.name + "'";
+  in->cs_override = cs_override;
+}
+
+// The designs read by LoadComputedDesign, built (hull, mass, running attitude) once everything is read.
+void BuildPendingDesigns(std::vector<DesignInput>* inputs) {
+  for (auto& in : *inputs) {
+    if (!in.pending) continue;
+    const eval::DesignCase dc = io::BuildParsedDesign(*in.pending);
+    SetComputedDesign(dc, in.pending_resolved, in.pending_file, in.pending_label, in.cs_override, &in);
+    for (auto& w : in.pending_warnings) in.computed->input_warnings.push_back(std::move(w));
+    in.pending.reset();
+  }
 }
 
 // The seas and points refine each computed design's grid (solver.adaptive_grid) until its MSI converges.
@@ -131,7 +150,7 @@ DesignInput ReadDesign(io::YamlMap& m, double g, bool single) {
     LoadComputedDesign(design_root, file, &in, cs);
     if (m.Has("Cs"))  // the override's flag, as the design's own solver.Cs is flagged when it is read
       for (const auto& f : eval::CheckEnvelopeValue(eval::EnvelopeQuantity::kDampingCs, cs, "Cs"))
-        in.computed->input_warnings.push_back(f.message);
+        in.pending_warnings.push_back(f.message);
     if (std::abs(g - design_root.resolved()["water"]["g_m_s2"].as<double>(g)) > 1e-9)
       throw io::InputError(in.where + ": the design's g differs from the evaluation's water.g_m_s2");
     return in;
@@ -159,6 +178,36 @@ DesignInput ReadDesign(io::YamlMap& m, double g, bool single) {
   in.design.rao.warnings = sk::RaoResonanceWarnings(in.design.rao);
   in.design.frequency_advice = "recompute " + csv + " over a wider range (hullopt rao, solver.frequencies)";
   return in;
+}
+
+// The blocks after the designs: seas, msi, positions, operability, resolution_check, report; then every key
+// of root must have been read (root.Finish()).
+struct EvaluateBlocks {
+  std::vector<sk::SeaState> seas;
+  sk::EvaluationOptions options;
+  std::vector<sk::PassengerPosition> points;
+  std::string points_where;  // "config:line: key 'positions.points'"
+  io::OperabilityConfig operability;
+  io::ResolutionCheckConfig resolution;
+  io::EvaluationReportOptions report;
+};
+
+EvaluateBlocks ReadEvaluateBlocks(io::YamlMap& root) {
+  EvaluateBlocks b;
+  b.seas = io::ReadSeas(root);
+  b.options.msi = io::ReadMsiOptions(root);
+  io::YamlMap positions = root.MapOrEmpty("positions");
+  // Points are checked against each design's hull once the designs are built (designs differ in length).
+  b.points = io::ReadPassengerPoints(positions, nullptr);
+  b.points_where = positions.Where("points");
+  positions.Finish();
+  b.operability = io::ParseOperability(root, b.points);
+  b.resolution = io::ReadResolutionCheck(root);
+  io::YamlMap report_map = root.MapOrEmpty("report");
+  b.report.plots = report_map.Boolean("plots", true) && !NoPlotsGiven();
+  report_map.Finish();
+  root.Finish();
+  return b;
 }
 
 double ReadSpeedCheck(io::YamlMap& root) {
@@ -202,14 +251,26 @@ void Run(const std::string& config_file, const std::string& out_dir) {
   if (computed) {
     std::vector<std::string> notes;
     io::SkipCampaignBlocks(root, &notes);
-    io::FillDesignDefaults(root, &notes);
+    io::FillDefaultSeas(root, &notes);
+    {
+      // The whole config as written, checked before the default frequency grid builds the hull (a separate
+      // record of keys and resolved values; the read below fills them).
+      io::YamlMap check(root.raw(), "", config_file, YAML::Node(YAML::NodeType::Map));
+      io::SkipCampaignBlocks(check, nullptr);
+      io::ParseDesignName(check, "design");
+      io::ParseDesign(check, config_file, "design");
+      ReadEvaluateBlocks(check);
+    }
+    io::FillDefaultFrequencies(root, &notes);
     for (const auto& n : notes) std::cerr << "hullopt: note: " << n << "\n";
     DesignInput in;
     in.where = root.Where("hull");
     // Recorded in config.resolved.yaml, so that a re-run keeps the design's name.
     in.design.name = io::ParseDesignName(root, std::filesystem::path(config_file).stem().string());
-    const eval::DesignCase dc = io::LoadDesignCase(root, config_file, in.design.name);
-    SetComputedDesign(dc, root.resolved(), config_file, "evaluate", -1.0, &in);
+    in.pending = io::ParseDesign(root, config_file, in.design.name);
+    in.pending_resolved = root.resolved();
+    in.pending_file = config_file;
+    in.pending_label = "evaluate";
     inputs.push_back(in);
   } else if (single) {
     inputs.push_back(ReadDesign(root, g, true));
@@ -223,6 +284,16 @@ void Run(const std::string& config_file, const std::string& out_dir) {
     for (size_t j = 0; j < i; ++j)
       if (inputs[i].design.name == inputs[j].design.name)
         throw io::InputError(inputs[i].where + ": design name '" + inputs[i].design.name + "' is used twice");
+  const EvaluateBlocks blocks = ReadEvaluateBlocks(root);
+  const std::vector<sk::SeaState>& seas = blocks.seas;
+  const sk::EvaluationOptions& options = blocks.options;
+  const std::vector<sk::PassengerPosition>& points = blocks.points;
+  const io::OperabilityConfig& operability = blocks.operability;
+  const io::ResolutionCheckConfig& resolution = blocks.resolution;
+  const io::EvaluationReportOptions& report = blocks.report;
+
+  // The whole config has been read and checked: now the designs are built (hull, mass, running attitude).
+  BuildPendingDesigns(&inputs);
   if (std::isfinite(speed_check)) {
     for (const auto& in : inputs) {
       const double u = in.design.rao.speed_m_s;
@@ -234,27 +305,11 @@ void Run(const std::string& config_file, const std::string& out_dir) {
       }
     }
   }
-
-  const std::vector<sk::SeaState> seas = io::ReadSeas(root);
-  sk::EvaluationOptions options;
-  options.msi = io::ReadMsiOptions(root);
-  io::YamlMap positions = root.MapOrEmpty("positions");
-  // Points are checked against each design's hull below (designs differ in length).
-  const std::vector<sk::PassengerPosition> points = io::ReadPassengerPoints(positions, nullptr);
-  positions.Finish();
-  const io::OperabilityConfig operability = io::ParseOperability(root, points);
-  const io::ResolutionCheckConfig resolution = io::ReadResolutionCheck(root);
-  io::YamlMap report_map = root.MapOrEmpty("report");
-  io::EvaluationReportOptions report;
-  report.plots = report_map.Boolean("plots", true) && !NoPlotsGiven();
-  report_map.Finish();
-  root.Finish();
-
   for (const auto& in : inputs) {
     for (const auto& p : points) {
       std::string error;
       if (!sk::IsValidPassengerPosition(p, in.design.hull, &error))
-        throw io::InputError(positions.Where("points") + ": design '" + in.design.name + "': " + error);
+        throw io::InputError(blocks.points_where + ": design '" + in.design.name + "': " + error);
     }
   }
   const std::vector<sk::WaveSpectrum> spectra = sk::BuildSpectra(seas);

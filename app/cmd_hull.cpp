@@ -51,16 +51,9 @@ void RunHull(const std::string& config, const std::string& out_dir) {
     m = io::ParseMassConfig(mass, hs, &warnings);
     hs = hull::ComputeHydrostatics(hull, water.rho_kg_m3, m.kg_m);
   }
-  {
-    eval::EnvelopeInput env;
-    env.rho_kg_m3 = water.rho_kg_m3;
-    env.g_m_s2 = water.g_m_s2;
-    if (has_speed) env.speed_m_s = speed.MetresPerSecond(hs.L_m, water.g_m_s2);
-    env.hull = &hull;
-    env.hs = &hs;
-    env.mass = &m;
-    for (auto& w : eval::ApplyEnvelope(eval::CheckEnvelope(env), config)) warnings.push_back(std::move(w));
-  }
+  for (auto& w : eval::ApplyDesignEnvelope(
+           water, has_speed ? speed.MetresPerSecond(hs.L_m, water.g_m_s2) : NAN, NAN, hull, hs, &m, config))
+    warnings.push_back(std::move(w));
   root.Finish();
   io::HydrostaticsReport rep;
   rep.warnings = warnings;

@@ -33,53 +33,33 @@ namespace {
 
 void RunRao(const std::string& config_file, const std::string& out_dir) {
   auto root = io::YamlMap::LoadFile(config_file);
-  const io::WaterOptions water = io::ParseWater(root);
-  const io::HullOptions hull_opts = io::ParseHullConfig(root, water);
-  const io::SpeedOptions speed = io::ParseSpeed(root, true);
-  std::vector<std::string> input_warnings;
-  const hull::HullForm hull = io::LoadHull(hull_opts, config_file, &input_warnings);
-  const std::string hull_name = io::ParseDesignName(root, hull_opts.file.empty()
-                                                              ? std::filesystem::path(config_file).stem().string()
-                                                              : std::filesystem::path(hull_opts.file).stem().string());
-  auto solver_map = root.Map("solver");
-  const std::string kernel_kind =
-      solver_map.Choice("kernel", {"transient_green", "impulsive"}, "transient_green");
-  const io::SolverConfig sc = io::ParseSolverConfig(solver_map);
-  if (kernel_kind == "impulsive" && sc.body_potential != sk::BodyPotential::kSourceSum)
-    solver_map.Fail("body_potential", "the impulsive stand-in kernel has the source sum only (use kernel: "
-                                      "transient_green)");
-  if (kernel_kind == "impulsive" && sc.sectional_force == sk::SectionalForce::kPressure)
-    solver_map.Fail("sectional_force", "the impulsive stand-in kernel has the momentum form only (use kernel: "
-                                       "transient_green)");
-  hull::Hydrostatics hs;  // at rest: L for Fn and the wavelengths, mass defaults
-  try {
-    hs = hull::ComputeHydrostatics(hull, water.rho_kg_m3);
-  } catch (const std::exception& e) {
-    throw io::InputError("hull '" + hull_name + "': " + e.what());
-  }
-  auto mass_map = root.MapOrEmpty("mass");
-  const hull::MassProperties mass = io::ParseMassConfig(mass_map, hs, &input_warnings);
-  const double U = speed.MetresPerSecond(hs.L_m, water.g_m_s2);
-  {
-    eval::EnvelopeInput env;
-    env.rho_kg_m3 = water.rho_kg_m3;
-    env.g_m_s2 = water.g_m_s2;
-    env.speed_m_s = U;
-    env.cs = sc.cs();
-    env.hull = &hull;
-    env.hs = &hs;
-    env.mass = &mass;
-    for (auto& w : eval::ApplyEnvelope(eval::CheckEnvelope(env), config_file)) input_warnings.push_back(std::move(w));
-  }
-  const std::optional<io::MeasuredRao> measured =
-      io::ReadRaoComparison(root, U / std::sqrt(water.g_m_s2 * hs.L_m), hs.L_m, water.g_m_s2);
-  root.Finish();
-  // The strips see the hull at its running attitude (the hull itself at even keel): given, or solved in calm
-  // water (solver.steady_flow: on).
-  const hull::RunningAttitude attitude =
-      eval::StripAttitude(hull, mass, U, water, sc, hull_opts.attitude, config_file + ": hull '" + hull_name + "'");
-  const hull::HullForm running = sc.steady_flow ? hull::ApplyRunningAttitude(hull, attitude)
-                                                : io::ApplyHullAttitude(hull_opts, hull, mass.lcg_m_from_ap, config_file);
+  io::DesignReadOptions read;
+  read.frequencies_required = true;
+  read.impulsive_kernel = true;
+  read.name_after_hull = [&](const io::HullOptions& h) {
+    return io::ParseDesignName(root, h.file.empty() ? std::filesystem::path(config_file).stem().string()
+                                                    : std::filesystem::path(h.file).stem().string());
+  };
+  io::ParsedDesign parsed = io::ParseDesign(root, config_file, "design", read);
+  const std::optional<io::RaoComparisonSource> compare = io::ParseRaoComparison(root);
+  root.Finish();  // the whole config read and checked before the hull is built
+  const std::string& hull_name = parsed.spec.name;
+  const std::string& kernel_kind = parsed.kernel;
+  // The hull at rest (L for Fn and the wavelengths, mass defaults) and at its running attitude: given, or
+  // solved in calm water (solver.steady_flow: on); the strips see the running one.
+  const eval::DesignCase design = io::BuildParsedDesign(parsed);
+  const io::WaterOptions& water = design.water;
+  const hull::HullForm& hull = design.hull;
+  const hull::Hydrostatics& hs = design.hydrostatics;
+  const hull::MassProperties& mass = design.mass;
+  const eval::SolverSettings& sc = design.solver;
+  const hull::RunningAttitude& attitude = design.attitude;
+  const hull::HullForm& running = design.running_hull;
+  const double U = design.speed_m_s;
+  std::vector<std::string> input_warnings = design.input_warnings;
+  std::optional<io::MeasuredRao> measured;
+  if (compare)
+    measured = io::ReadRaoComparison(*compare, U / std::sqrt(water.g_m_s2 * hs.L_m), hs.L_m, water.g_m_s2);
   sk::StripKernel geometry;  // panelled once: the check here, then the solver
   try {
     // Sections first: a section that does not reach the waterline is named with its body and station.

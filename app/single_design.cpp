@@ -10,13 +10,35 @@
 #include "io/config/seas_config.h"
 
 namespace hullopt::app {
+namespace {
+
+// Every block EvaluateSingleDesign reads, read once from the config as written (a separate record of keys and
+// resolved values) and nothing built: a fault anywhere is refused before the default frequency grid builds
+// the hull, and before any calm-water or strip work.
+void CheckSingleDesignConfig(const io::YamlMap& root, const std::string& name, bool strict) {
+  io::YamlMap check(root.raw(), "", root.file(), YAML::Node(YAML::NodeType::Map));
+  if (check.Has("name")) check.Skip("name");  // read by the caller
+  io::SkipCampaignBlocks(check, nullptr);
+  io::ParseDesign(check, root.file(), name);
+  io::ReadSeas(check);
+  io::ReadMsiOptions(check);
+  io::YamlMap positions = check.MapOrEmpty("positions");
+  io::ReadPassengerPoints(positions, nullptr);
+  positions.Finish();
+  io::ReadResolutionCheck(check);
+  if (strict) check.Finish();
+}
+
+}  // namespace
 
 SingleDesign EvaluateSingleDesign(io::YamlMap& root, const std::string& name, const std::string& command,
                                   bool strict, const std::function<void()>& before_work) {
   SingleDesign s;
   const std::string& config = root.file();
   io::SkipCampaignBlocks(root, &s.notes);
-  io::FillDesignDefaults(root, &s.notes);
+  io::FillDefaultSeas(root, &s.notes);
+  CheckSingleDesignConfig(root, name, strict);
+  io::FillDefaultFrequencies(root, &s.notes);
   s.design = io::LoadDesignCase(root, config, name);
   io::NoteModelDefaults(root.raw(), s.design, &s.notes);
   const std::vector<sk::SeaState> seas = io::ReadSeas(root);

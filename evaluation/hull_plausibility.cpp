@@ -34,4 +34,18 @@ std::vector<std::string> ApplyEnvelope(const std::vector<EnvelopeFinding>& findi
   return warnings;
 }
 
+std::vector<std::string> ApplyDesignEnvelope(const WaterOptions& water, double speed_m_s, double cs,
+                                             const hull::HullForm& hull, const hull::Hydrostatics& hs,
+                                             const hull::MassProperties* mass, const std::string& where) {
+  EnvelopeInput env;
+  env.rho_kg_m3 = water.rho_kg_m3;
+  env.g_m_s2 = water.g_m_s2;
+  env.speed_m_s = speed_m_s;
+  env.cs = cs;
+  env.hull = &hull;
+  env.hs = &hs;
+  env.mass = mass;
+  return ApplyEnvelope(CheckEnvelope(env), where);
+}
+
 }  // namespace hullopt::eval

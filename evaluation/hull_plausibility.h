@@ -4,8 +4,9 @@
 #include <string>
 #include <vector>
 
-#include "parametric_hull/hull_form.h"
 #include "evaluation/validity_envelope.h"
+#include "evaluation/water.h"
+#include "parametric_hull/hull_form.h"
 #include "parametric_hull/plausibility.h"
 
 namespace hullopt::eval {
@@ -22,5 +23,11 @@ std::vector<std::string> ApplyFindings(const std::vector<hull::PlausibilityFindi
 /// The validity envelope (evaluation/validity_envelope.h) applied as ApplyFindings does: throws InputError
 /// "where: key 'k': rule" for the first refusal; returns the warnings' messages.
 std::vector<std::string> ApplyEnvelope(const std::vector<EnvelopeFinding>& findings, const std::string& where);
+
+/// The envelope of one design's inputs, applied as ApplyEnvelope: water, hull and its hydrostatics at rest,
+/// and where known (NaN speed or cs, null mass: not checked) the speed [m/s], Cs and mass.
+std::vector<std::string> ApplyDesignEnvelope(const WaterOptions& water, double speed_m_s, double cs,
+                                             const hull::HullForm& hull, const hull::Hydrostatics& hs,
+                                             const hull::MassProperties* mass, const std::string& where);
 
 }  // namespace hullopt::eval

@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "evaluation/design_resolution_check.h"
+#include "evaluation/design_spec.h"
 #include "evaluation/input_error.h"
 #include "evaluation/validity_envelope.h"
 
@@ -27,6 +28,7 @@ class MsiEvaluator : public opt::Evaluator, public ResolutionCheckable {
     for (std::size_t i = 0; i < o_.diagram.cells.size(); ++i) cells.push_back(o_.diagram.Sea(i));
     grid_spectra_ = sk::BuildSpectra(cells);
   }
+  const DesignBasis& basis() const { return basis_; }
 
   opt::EvalResult Evaluate(const std::vector<double>& x) override {
     opt::EvalResult r;
@@ -183,6 +185,11 @@ class MsiEvaluator : public opt::Evaluator, public ResolutionCheckable {
 std::unique_ptr<opt::Evaluator> MakeMsiEvaluator(DesignBasis basis, const std::vector<std::string>& variables,
                                                  MsiObjectiveOptions options) {
   return std::make_unique<MsiEvaluator>(std::move(basis), TrialFields(variables), std::move(options));
+}
+
+void CheckBaseDesign(const opt::Evaluator& evaluator) {
+  const auto* m = dynamic_cast<const MsiEvaluator*>(&evaluator);
+  if (m) BuildDesign(BasisSpec(m->basis(), "base design"));
 }
 
 }  // namespace hullopt::eval

@@ -51,4 +51,10 @@ class ResolutionCheckable {
 std::unique_ptr<opt::Evaluator> MakeMsiEvaluator(DesignBasis basis, const std::vector<std::string>& variables,
                                                  MsiObjectiveOptions options);
 
+/// Builds the base design of an evaluator made by MakeMsiEvaluator (the config's own values, the mass of a
+/// config without `mass:`) as a single design is built: its refusals (the generator, the envelope, the
+/// calm-water attitude) are the config's. Called once the whole config has been read; nothing for another
+/// evaluator.
+void CheckBaseDesign(const opt::Evaluator& evaluator);
+
 }  // namespace hullopt::eval

@@ -1,11 +1,17 @@
 #include "evaluation/strip_attitude.h"
 
+#include <atomic>
 #include <sstream>
 
 #include "evaluation/input_error.h"
 #include "seakeeping/motions/calm_water.h"
 
 namespace hullopt::eval {
+namespace {
+std::atomic<long> g_calm_water_solves{0};
+}  // namespace
+
+long CalmWaterSolves() { return g_calm_water_solves.load(); }
 
 hull::RunningAttitude StripAttitude(const hull::HullForm& at_rest, const hull::MassProperties& mass,
                                     double speed_m_s, const WaterOptions& water, const SolverSettings& settings,
@@ -20,6 +26,7 @@ hull::RunningAttitude StripAttitude(const hull::HullForm& at_rest, const hull::M
   o.geometry.layout = sk::StationLayout::kCellFaces;
   o.sectional_force = settings.sectional_force;
   sk::CalmWaterResult r;
+  ++g_calm_water_solves;
   try {
     r = sk::SolveRunningAttitude(at_rest, mass, speed_m_s, water.rho_kg_m3, water.g_m_s2, o);
   } catch (const std::logic_error& e) {

@@ -18,6 +18,10 @@ hull::RunningAttitude StripAttitude(const hull::HullForm& at_rest, const hull::M
                                     double speed_m_s, const WaterOptions& water, const SolverSettings& settings,
                                     hull::RunningAttitude given, const std::string& where);
 
+/// How many calm-water attitudes StripAttitude has solved since the start of the process (for the checks that
+/// a refused config solved nothing).
+long CalmWaterSolves();
+
 /// One line for the outputs: "running attitude ... (given | from calm water on the strips)", empty at even keel
 /// without steady_flow.
 std::string AttitudeNote(const hull::RunningAttitude& attitude, const SolverSettings& settings);

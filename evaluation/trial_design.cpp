@@ -4,10 +4,9 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "evaluation/design_spec.h"
 #include "evaluation/hull_plausibility.h"
 #include "evaluation/input_error.h"
-#include "evaluation/strip_attitude.h"
-#include "parametric_hull/hull_generator.h"
 #include "parametric_hull/plausibility.h"
 
 namespace hullopt::eval {
@@ -28,6 +27,19 @@ bool IsTrialField(const std::vector<const hull::DesignVariableField*>& fields, c
 }
 
 }  // namespace
+
+DesignSpec BasisSpec(const DesignBasis& b, const std::string& name) {
+  DesignSpec s;
+  s.name = name;
+  s.source = b.config_file;
+  s.water = b.water;
+  s.hull.variables = b.variables;
+  s.hull.attitude = b.attitude;
+  s.speed = b.speed;
+  s.solver = b.solver;
+  s.has_frequencies = b.has_frequencies;
+  return s;
+}
 
 std::vector<const hull::DesignVariableField*> TrialFields(const std::vector<std::string>& names) {
   std::vector<const hull::DesignVariableField*> fields;
@@ -58,12 +70,7 @@ DesignCase BuildTrialDesign(const DesignBasis& b, const std::vector<const hull::
   d.water = b.water;
   d.solver = b.solver;
   d.has_frequencies = b.has_frequencies;
-  try {
-    d.hull = hull::GenerateHull(v);
-  } catch (const std::logic_error& e) {  // invalid_argument and domain_error
-    throw InputError(file + ": key 'hull.parametric': " + e.what());
-  }
-  d.input_warnings = CheckHull(d.hull, file + ": key 'hull.parametric'");
+  d.hull = GenerateParametricHull(v, file, &d.input_warnings);
   try {
     d.hydrostatics = hull::ComputeHydrostatics(d.hull, d.water.rho_kg_m3);
   } catch (const std::exception& e) {
@@ -80,34 +87,15 @@ DesignCase BuildTrialDesign(const DesignBasis& b, const std::vector<const hull::
     if (f.refuse) throw InputError(file + ":?: key 'mass." + f.quantity + "': " + f.message);
     d.input_warnings.push_back(f.message);
   }
-  d.attitude = b.attitude;
-  d.attitude.pivot_x_m = defaults.lcg_m_from_ap;
-  try {
-    d.running_hull = hull::ApplyRunningAttitude(d.hull, d.attitude);
-  } catch (const std::logic_error& e) {
-    throw InputError(file + ": key 'hull.attitude': " + e.what());
-  }
   d.speed_m_s = b.speed.MetresPerSecond(hs.L_m, d.water.g_m_s2);
   d.mass.mass_kg = hs.displacement_kg;
   d.mass.lcg_m_from_ap = hs.lcb_m_from_ap;
   d.mass.kyy_m = b.kyy_over_L * hs.L_m;
   d.mass.kg_m = b.kg_over_T * hs.T_m;
   d.hydrostatics = hull::ComputeHydrostatics(d.hull, d.water.rho_kg_m3, d.mass.kg_m);
-  if (d.solver.steady_flow) {
-    d.attitude = StripAttitude(d.hull, d.mass, d.speed_m_s, d.water, d.solver, b.attitude, file + ": design '" + name + "'");
-    d.running_hull = hull::ApplyRunningAttitude(d.hull, d.attitude);
-  }
-  // The method's validity envelope, as for a design read from a config: a trial beyond a hard limit is not
-  // produced (its error is its message), one within is flagged in its row.
-  EnvelopeInput env;
-  env.rho_kg_m3 = d.water.rho_kg_m3;
-  env.g_m_s2 = d.water.g_m_s2;
-  env.speed_m_s = d.speed_m_s;
-  env.cs = d.solver.cs();
-  env.hull = &d.hull;
-  env.hs = &d.hydrostatics;
-  env.mass = &d.mass;
-  for (auto& w : ApplyEnvelope(CheckEnvelope(env), file + ": design '" + name + "'")) d.input_warnings.push_back(std::move(w));
+  // The attitude and the validity envelope as for a design read from a config: a trial beyond a hard limit is
+  // not produced (its error is its message), one within is flagged in its row.
+  FinishDesign(&d, b.attitude, file, file + ": design '" + name + "'", /*has_speed=*/true);
   return d;
 }
 

@@ -31,6 +31,11 @@ struct DesignBasis {
   double kg_over_T = kDefaultKgOverT;
 };
 
+/// The base design of a campaign as a single-design spec: its own variables, water, speed and solver, the
+/// mass of a config without `mass:` (not the campaign's mass rule), named `name` in messages.
+struct DesignSpec;
+DesignSpec BasisSpec(const DesignBasis& basis, const std::string& name);
+
 /// The free variables of a campaign, in its order (the fields of x); nullptr for a name that is not a campaign
 /// variable of DesignVariableFields() (the campaign's own check names it, opt::CampaignDefinition).
 std::vector<const hull::DesignVariableField*> TrialFields(const std::vector<std::string>& names);

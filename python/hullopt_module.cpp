@@ -1,7 +1,8 @@
 // The Python module `hullopt` (extension `hullopt._hullopt`): hull generation and reading, hydrostatics,
-// heave and pitch RAOs, seas and MSI, and the command line in-process (campaigns). Options given as Python
-// dicts go through the same YAML readers as the CLI's config files, so defaults, rules and error messages are
-// the CLI's. Arrays are NumPy arrays; units are SI and named in every docstring.
+// heave and pitch RAOs, seas and MSI, and the command line in-process (campaigns). `design()` turns keyword
+// arguments and dicts straight into the typed eval::DesignSpec and builds it with eval::BuildDesign, as the
+// commands do; the older calls' option dicts go through the CLI's YAML block readers, so defaults, rules and
+// error messages are the CLI's. Arrays are NumPy arrays; units are SI and named in every docstring.
 #include <pybind11/complex.h>
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
@@ -10,24 +11,26 @@
 #include <CLI/CLI.hpp>
 #include <algorithm>
 #include <cmath>
-#include <sstream>
 #include <complex>
+#include <sstream>
 #include <string>
 #include <vector>
 
 #include "app/commands.h"
 #include "evaluation/adaptive_frequency_grid.h"
+#include "evaluation/design_spec.h"
 #include "evaluation/hull_plausibility.h"
 #include "evaluation/strip_attitude.h"
 #include "evaluation/validity_envelope.h"
-#include "io/config/design_config.h"
 #include "hullopt/hullopt.h"
+#include "io/config/design_config.h"
 #include "io/config/hull_config.h"
-#include "io/formats/input_error.h"
 #include "io/config/motion_config.h"
 #include "io/config/seas_config.h"
 #include "io/config/water_config.h"
 #include "io/config/yaml_map.h"
+#include "io/formats/input_error.h"
+#include "optimizer/rao_peak.h"
 #include "seakeeping/motions/calm_water.h"
 #include "seakeeping/motions/forced_oscillation.h"
 
@@ -126,6 +129,138 @@ sk::HullExtent ExtentOf(const hull::Hydrostatics& hs, const hull::MassProperties
 io::WaterOptions WaterOf(const py::object& water) {
   io::YamlMap root = RootOf("water", water);
   return io::ParseWater(root);
+}
+
+// ---- A design from Python objects: keyword arguments and dicts straight into eval::DesignSpec (no YAML).
+// ----
+
+[[noreturn]] void Refuse(const std::string& what) {
+  throw io::InputError(std::string(kPythonSource) + ": " + what);
+}
+
+std::string Known(const std::vector<std::string>& keys) {
+  std::string s;
+  for (const auto& k : keys) s += (s.empty() ? "" : ", ") + k;
+  return s;
+}
+
+// The dict's keys, each checked against the known ones (a misspelt key is named, as a config's would be).
+std::vector<std::pair<std::string, py::handle>> Items(const py::object& d, const std::string& block,
+                                                      const std::vector<std::string>& known) {
+  std::vector<std::pair<std::string, py::handle>> out;
+  if (d.is_none()) return out;
+  if (!py::isinstance<py::dict>(d)) Refuse(block + ": must be a dict");
+  for (const auto& kv : py::reinterpret_borrow<py::dict>(d)) {
+    const std::string key = py::str(kv.first);
+    if (std::find(known.begin(), known.end(), key) == known.end())
+      Refuse(block + ": unknown key '" + key + "' (known: " + Known(known) + ")");
+    out.emplace_back(key, kv.second);
+  }
+  return out;
+}
+
+double NumberOf(const py::handle& v, const std::string& key) {
+  if (py::isinstance<py::bool_>(v) || !(py::isinstance<py::float_>(v) || py::isinstance<py::int_>(v)))
+    Refuse("key '" + key + "': must be a number");
+  const double x = v.cast<double>();
+  if (!std::isfinite(x)) Refuse("key '" + key + "': must be a finite number");
+  return x;
+}
+
+int IntegerOf(const py::handle& v, const std::string& key) {
+  if (py::isinstance<py::bool_>(v) || !py::isinstance<py::int_>(v))
+    Refuse("key '" + key + "': must be a whole number");
+  return v.cast<int>();
+}
+
+bool SwitchOf(const py::handle& v, const std::string& key) {
+  if (py::isinstance<py::bool_>(v)) return v.cast<bool>();
+  if (py::isinstance<py::str>(v)) {
+    const std::string s = py::str(v);
+    if (s == "on") return true;
+    if (s == "off") return false;
+  }
+  Refuse("key '" + key + "': must be True/False (or 'on'/'off')");
+}
+
+std::string ChoiceOf(const py::handle& v, const std::string& key, const std::vector<std::string>& choices) {
+  const std::string s = py::isinstance<py::str>(v) ? std::string(py::str(v)) : std::string();
+  if (std::find(choices.begin(), choices.end(), s) == choices.end())
+    Refuse("key '" + key + "': must be one of " + Known(choices));
+  return s;
+}
+
+eval::WaterOptions TypedWater(const py::object& water) {
+  eval::WaterOptions w;
+  for (const auto& [k, v] : Items(water, "water", {"rho_kg_m3", "g_m_s2"}))
+    (k == "rho_kg_m3" ? w.rho_kg_m3 : w.g_m_s2) = NumberOf(v, "water." + k);
+  if (std::string e; !w.IsValid(&e)) Refuse("water: " + e);
+  return w;
+}
+
+eval::MassSpec TypedMass(const py::object& mass) {
+  eval::MassSpec m;
+  const std::vector<std::string> known = {"mass_kg",   "lcg_m_from_ap",       "kyy_m", "kyy_over_L", "kg_m",
+                                          "kg_over_T", "accept_mass_mismatch"};
+  for (const auto& [k, v] : Items(mass, "mass", known)) {
+    if (k == "accept_mass_mismatch") {
+      m.accept_mass_mismatch = SwitchOf(v, "mass." + k);
+      continue;
+    }
+    const double x = NumberOf(v, "mass." + k);
+    if (k == "mass_kg") m.mass_kg = x;
+    if (k == "lcg_m_from_ap") m.lcg_m_from_ap = x;
+    if (k == "kyy_m") m.kyy_m = x;
+    if (k == "kyy_over_L") m.kyy_over_L = x;
+    if (k == "kg_m") m.kg_m = x;
+    if (k == "kg_over_T") m.kg_over_T = x;
+  }
+  if (std::string e; !m.IsValid(&e)) Refuse(e);
+  return m;
+}
+
+// The solver settings a Python design may set; the others keep the defaults of a config without them.
+eval::SolverSettings TypedSolver(const py::object& solver) {
+  eval::SolverSettings s;
+  const std::vector<std::string> known = {"method",      "sections",      "panels",
+                                          "Cs",          "path",          "sectional_force",
+                                          "steady_flow", "adaptive_grid", "interaction"};
+  for (const auto& [k, v] : Items(solver, "solver", known)) {
+    const std::string key = "solver." + k;
+    if (k == "method")
+      s.rao.method = ChoiceOf(v, key, {"time_domain_strip", "strip_theory_stf"}) == "strip_theory_stf"
+                         ? sk::RaoSolverOptions::Method::kStripTheory
+                         : sk::RaoSolverOptions::Method::kTimeDomainStrip;
+    if (k == "sections") s.rao.sections = IntegerOf(v, key);
+    if (k == "panels") s.rao.panels = IntegerOf(v, key);
+    if (k == "Cs") s.rao.motion.damping_cs = NumberOf(v, key);
+    if (k == "path")
+      s.rao.path = ChoiceOf(v, key, {"periodic", "time_marching"}) == "periodic"
+                       ? sk::RaoSolverOptions::Path::kPeriodic
+                       : sk::RaoSolverOptions::Path::kTimeMarching;
+    if (k == "sectional_force")
+      s.sectional_force = ChoiceOf(v, key, {"momentum", "pressure"}) == "pressure"
+                              ? sk::SectionalForce::kPressure
+                              : sk::SectionalForce::kMomentum;
+    if (k == "steady_flow") s.steady_flow = SwitchOf(v, key);
+    if (k == "adaptive_grid") s.grid.enabled = SwitchOf(v, key);
+    if (k == "interaction") s.rao.interaction = SwitchOf(v, key);
+  }
+  if (std::string e; !s.rao.IsValid(&e) || !s.grid.IsValid(&e)) Refuse("solver: " + e);
+  if (s.cs() < 0.0) Refuse("key 'solver.Cs': must be >= 0 (the paper's values are 0 to 0.15)");
+  return s;
+}
+
+// speed_kn= or speed_m_s=, exactly one.
+eval::SpeedOptions TypedSpeed(const py::object& kn, const py::object& m_s) {
+  if (kn.is_none() == m_s.is_none())
+    throw py::type_error(kn.is_none() ? "give the speed: speed_kn= [kn] or speed_m_s= [m/s]"
+                                      : "give speed_kn= or speed_m_s=, not both");
+  eval::SpeedOptions s;
+  s.unit = kn.is_none() ? eval::SpeedOptions::Unit::kMetresPerSecond : eval::SpeedOptions::Unit::kKnots;
+  s.value = NumberOf(kn.is_none() ? m_s : kn, kn.is_none() ? "speed_m_s" : "speed_kn");
+  if (std::string e; !s.IsValid(&e)) Refuse(e);
+  return s;
 }
 
 }  // namespace
@@ -274,15 +409,8 @@ PYBIND11_MODULE(_hullopt, m) {
         // The method's validity envelope, as the commands apply it: refused beyond a hard limit (ValueError),
         // flagged in the returned warnings (a speed in knots given as m/s is flagged or refused here).
         const hull::Hydrostatics hs = hull::ComputeHydrostatics(h, w.rho_kg_m3);
-        eval::EnvelopeInput env;
-        env.rho_kg_m3 = w.rho_kg_m3;
-        env.g_m_s2 = w.g_m_s2;
-        env.speed_m_s = speed_m_s;
-        env.cs = sc.cs();
-        env.hull = &h;
-        env.hs = &hs;
-        env.mass = &mass;
-        const std::vector<std::string> flags = eval::ApplyEnvelope(eval::CheckEnvelope(env), "hull '" + name + "'");
+        const std::vector<std::string> flags =
+            eval::ApplyDesignEnvelope(w, speed_m_s, sc.cs(), h, hs, &mass, "hull '" + name + "'");
         sk::RaoTable t;
         hull::RunningAttitude attitude;
         {
@@ -457,17 +585,38 @@ PYBIND11_MODULE(_hullopt, m) {
       "...), mean and warnings (the validity envelope's flags of that sea: steepness, rms acceleration above 1 g).");
 
   m.def(
+      "rao_peak",
+      [](const std::vector<double>& x, const std::vector<double>& y) {
+        const opt::RaoPeak p = opt::InterpolatedPeak(x, y);
+        return py::make_tuple(p.value, p.x, p.at_edge);
+      },
+      py::arg("x"), py::arg("y"),
+      "(value, x, at_edge): the peak of samples y(x) by a parabola through the largest sample and its "
+      "neighbours, "
+      "as the commands' summaries find it; at_edge when the largest sample is the first or last.");
+
+  m.def(
       "evaluation_frequencies", [](int count) { return Array(eval::EvaluationFrequencies(count)); },
       py::arg("count") = 60, "The wave-frequency grid [rad/s] `hullopt evaluate` uses (uniform 0.2–3 rad/s).");
 
-  py::class_<eval::DesignCase>(m, "Design",
-                              "One design as `hullopt evaluate` and the campaigns read it from a config: hull, "
-                              "hydrostatics, mass, water, speed and solver.")
+  py::class_<eval::DesignCase>(
+      m, "Design",
+      "One design as `hullopt evaluate` and the campaigns read it from a config: hull, "
+      "hydrostatics, mass, water, speed and solver.")
       .def_readonly("name", &eval::DesignCase::name)
       .def_readonly("hull", &eval::DesignCase::hull)
       .def_readonly("mass", &eval::DesignCase::mass)
       .def_readonly("speed_m_s", &eval::DesignCase::speed_m_s, "[m/s]")
-      .def_property_readonly("hydrostatics", [](const eval::DesignCase& d) { return HydrostaticsDict(d.hydrostatics); })
+      .def_readonly("warnings", &eval::DesignCase::input_warnings,
+                    "plausibility and validity-envelope flags of the inputs (carried into every result)")
+      .def_property_readonly(
+          "sinkage_m", [](const eval::DesignCase& d) { return d.attitude.sinkage_m; },
+          "[m] running sinkage at the LCG (+ down): given, or solved with steady_flow")
+      .def_property_readonly(
+          "trim_deg", [](const eval::DesignCase& d) { return d.attitude.trim_deg; },
+          "[deg] running trim (+ bow up)")
+      .def_property_readonly("hydrostatics",
+                             [](const eval::DesignCase& d) { return HydrostaticsDict(d.hydrostatics); })
       .def(
           "raos",
           [](const eval::DesignCase& d, const py::object& omega) {
@@ -484,6 +633,50 @@ PYBIND11_MODULE(_hullopt, m) {
           "RAOs (as compute_raos) at omega_rad_s [rad/s], by default the grid of `hullopt evaluate`: the "
           "config's solver.frequencies, else the evaluation grid; with solver.adaptive_grid on (the default) "
           "that grid refined around the RAO peaks.");
+
+  m.def(
+      "design",
+      [](const py::object& hull, const py::object& speed_kn, const py::object& speed_m_s,
+         const py::object& mass, const py::object& water, const py::object& solver,
+         const py::object& attitude, const std::string& name) {
+        eval::DesignSpec spec;
+        spec.name = name;
+        spec.source = kPythonSource;
+        spec.water = TypedWater(water);
+        if (py::isinstance<hull::HullForm>(hull)) {
+          spec.hull.parametric = false;
+          spec.hull.given = hull.cast<hull::HullForm>();
+        } else {
+          spec.hull.variables = py::isinstance<py::dict>(hull)
+                                    ? py::module_::import("hullopt")
+                                          .attr("DesignVariables")(**py::reinterpret_borrow<py::dict>(hull))
+                                          .cast<hull::DesignVariables>()
+                                    : hull.cast<hull::DesignVariables>();
+          spec.hull.variables.rho_kg_m3 = spec.water.rho_kg_m3;  // as a config's water: gives it
+        }
+        spec.speed = TypedSpeed(speed_kn, speed_m_s);
+        spec.mass = TypedMass(mass);
+        spec.solver = TypedSolver(solver);
+        if (!attitude.is_none()) {
+          for (const auto& [k, v] : Items(attitude, "attitude", {"sinkage_m", "trim_deg"}))
+            (k == "sinkage_m" ? spec.hull.attitude.sinkage_m : spec.hull.attitude.trim_deg) =
+                NumberOf(v, "hull.attitude." + k);
+        }
+        py::gil_scoped_release release;
+        return eval::BuildDesign(spec);
+      },
+      py::arg("hull"), py::kw_only(), py::arg("speed_kn") = py::none(), py::arg("speed_m_s") = py::none(),
+      py::arg("mass") = py::none(), py::arg("water") = py::none(), py::arg("solver") = py::none(),
+      py::arg("attitude") = py::none(), py::arg("name") = "design",
+      "One design from Python values, built as the commands build a config's design (same rules, defaults "
+      "and "
+      "results): hull a DesignVariables, a dict of its fields or a Hull (e.g. from load_hull); the speed by "
+      "keyword, speed_kn= [kn] or speed_m_s= [m/s] (exactly one); mass a dict as a config's mass: block "
+      "(mass_kg, lcg_m_from_ap, kyy_m or kyy_over_L, kg_m or kg_over_T, accept_mass_mismatch; the rest from "
+      "the "
+      "hull); water {rho_kg_m3, g_m_s2}; solver {method, sections, panels, Cs, path, sectional_force, "
+      "steady_flow, adaptive_grid, interaction}; attitude {sinkage_m, trim_deg}. hullopt.InputError (a "
+      "ValueError) names the key and rule; TypeError for no speed or both.");
 
   m.def(
       "load_design",

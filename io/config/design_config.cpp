@@ -1,10 +1,9 @@
 #include "io/config/design_config.h"
 
-#include "evaluation/hull_plausibility.h"
-#include "evaluation/strip_attitude.h"
-#include "io/formats/input_error.h"
+#include "evaluation/design_spec.h"
 #include "io/config/motion_config.h"
 #include "io/config/water_config.h"
+#include "io/formats/input_error.h"
 
 namespace hullopt::io {
 
@@ -14,49 +13,66 @@ std::string ParseDesignName(YamlMap& root, const std::string& fallback) {
   return name;
 }
 
-eval::DesignCase LoadDesignCase(YamlMap& root, const std::string& config_file, const std::string& name,
-                                bool read_speed, DesignConfig* config) {
-  eval::DesignCase d;
-  d.name = name;
-  d.water = ParseWater(root);
-  const HullOptions hull_opts = ParseHullConfig(root, d.water);
-  const SpeedOptions speed = read_speed ? ParseSpeed(root, true) : SpeedOptions{};
-  d.hull = LoadHull(hull_opts, config_file, &d.input_warnings);
-  if (root.Has("solver")) {
-    YamlMap s = root.Map("solver");
-    d.has_frequencies = s.Has("frequencies");
-    if (s.Has("kernel")) s.Choice("kernel", {"transient_green"}, "transient_green");
-    // Evaluations in seas choose their own frequency grid, so solver.frequencies is optional here.
-    d.solver = ParseSolverConfig(s, /*frequencies_required=*/false);
-  }
-  try {
-    d.hydrostatics = hull::ComputeHydrostatics(d.hull, d.water.rho_kg_m3);
-  } catch (const std::exception& e) {
-    throw InputError(config_file + ": design '" + name + "': " + e.what());
+ParsedDesign ParseDesign(YamlMap& root, const std::string& config_file, const std::string& name,
+                         const DesignReadOptions& o) {
+  ParsedDesign p;
+  eval::DesignSpec& s = p.spec;
+  s.name = name;
+  s.source = config_file;
+  s.water = ParseWater(root);
+  const HullOptions hull_opts = ParseHullConfig(root, s.water);
+  const SpeedOptions speed = o.read_speed ? ParseSpeed(root, true) : SpeedOptions{};
+  if (o.name_after_hull) s.name = o.name_after_hull(hull_opts);
+  s.has_speed = o.read_speed;
+  s.speed = speed;
+  s.hull.parametric = hull_opts.source == HullOptions::Source::kParametric;
+  s.hull.variables = hull_opts.design;
+  s.hull.attitude = hull_opts.attitude;
+  if (o.frequencies_required || root.Has("solver")) {
+    YamlMap sm = root.Map("solver");
+    s.has_frequencies = sm.Has("frequencies");
+    if (o.impulsive_kernel)
+      p.kernel = sm.Choice("kernel", {"transient_green", "impulsive"}, "transient_green");
+    else if (sm.Has("kernel"))
+      sm.Choice("kernel", {"transient_green"}, "transient_green");
+    // Evaluations in seas choose their own frequency grid, so solver.frequencies is optional there.
+    s.solver = ParseSolverConfig(sm, o.frequencies_required);
+    if (p.kernel == "impulsive" && s.solver.body_potential != sk::BodyPotential::kSourceSum)
+      sm.Fail("body_potential",
+              "the impulsive stand-in kernel has the source sum only (use kernel: "
+              "transient_green)");
+    if (p.kernel == "impulsive" && s.solver.sectional_force == sk::SectionalForce::kPressure)
+      sm.Fail("sectional_force",
+              "the impulsive stand-in kernel has the momentum form only (use kernel: "
+              "transient_green)");
   }
   YamlMap mass_map = root.MapOrEmpty("mass");
-  d.mass = ParseMassConfig(mass_map, d.hydrostatics, &d.input_warnings);
-  if (read_speed) d.speed_m_s = speed.MetresPerSecond(d.hydrostatics.L_m, d.water.g_m_s2);
-  if (read_speed && d.solver.steady_flow) {
-    d.attitude = eval::StripAttitude(d.hull, d.mass, d.speed_m_s, d.water, d.solver, hull_opts.attitude,
-                                     config_file + ": design '" + name + "'");
-    d.running_hull = hull::ApplyRunningAttitude(d.hull, d.attitude);
-  } else {
-    d.attitude = hull_opts.attitude;
-    d.attitude.pivot_x_m = d.mass.lcg_m_from_ap;
-    d.running_hull = ApplyHullAttitude(hull_opts, d.hull, d.mass.lcg_m_from_ap, config_file);
-  }
-  // The method's validity envelope: refused beyond its hard limits, flagged in every output within them.
-  eval::EnvelopeInput env;
-  env.rho_kg_m3 = d.water.rho_kg_m3;
-  env.g_m_s2 = d.water.g_m_s2;
-  if (read_speed) env.speed_m_s = d.speed_m_s;
-  env.cs = d.solver.cs();
-  env.hull = &d.hull;
-  env.hs = &d.hydrostatics;
-  env.mass = &d.mass;
-  for (auto& w : eval::ApplyEnvelope(eval::CheckEnvelope(env), config_file)) d.input_warnings.push_back(std::move(w));
-  if (config) *config = {d.water, hull_opts, speed, d.solver, d.has_frequencies};
+  s.mass = ParseMassSpec(mass_map);
+  p.resolved_mass = mass_map.resolved();
+  p.config = {s.water, hull_opts, speed, s.solver, s.has_frequencies};
+  return p;
+}
+
+void ReadHullFile(ParsedDesign& p) {
+  if (p.spec.hull.parametric || !p.spec.hull.given.bodies.empty()) return;
+  p.spec.hull.given_warnings.clear();
+  p.spec.hull.given = LoadHull(p.config.hull, p.spec.source, &p.spec.hull.given_warnings);
+}
+
+eval::DesignCase BuildParsedDesign(ParsedDesign& p) {
+  ReadHullFile(p);
+  eval::DesignCase d = eval::BuildDesign(p.spec);
+  RecordResolvedMass(p.resolved_mass, p.spec.mass, d.mass);
+  return d;
+}
+
+eval::DesignCase LoadDesignCase(YamlMap& root, const std::string& config_file, const std::string& name,
+                                bool read_speed, DesignConfig* config) {
+  DesignReadOptions o;
+  o.read_speed = read_speed;
+  ParsedDesign p = ParseDesign(root, config_file, name, o);
+  eval::DesignCase d = BuildParsedDesign(p);
+  if (config) *config = p.config;
   return d;
 }
 

@@ -2,9 +2,11 @@
 // A design from a config (evaluate, optimize, calibrate, coefficients): the water, hull, speed, solver
 // (optional: defaults 40 sections × 14 panels, Cs 0, periodic path) and mass sections read into an
 // eval::DesignCase.
+#include <functional>
 #include <string>
 
 #include "evaluation/design_case.h"
+#include "evaluation/design_spec.h"
 #include "evaluation/trial_design.h"
 #include "io/config/hull_config.h"
 #include "io/config/speed_config.h"
@@ -25,6 +27,41 @@ struct DesignConfig {
 /// Recorded in config.resolved.yaml, so that a re-run keeps the name.
 std::string ParseDesignName(YamlMap& root, const std::string& fallback);
 
+/// A design's blocks as read: the typed spec, the options it came from, the resolved `mass` map (whose
+/// defaults BuildParsedDesign fills in) and the strip kernel asked for (`rao` only offers `impulsive`).
+struct ParsedDesign {
+  eval::DesignSpec spec;
+  DesignConfig config;
+  YAML::Node resolved_mass;
+  std::string kernel = "transient_green";
+};
+
+/// What a command reads of a design besides the common blocks.
+struct DesignReadOptions {
+  bool read_speed = true;             ///< false: the speed is left to the caller (speed_m_s = 0)
+  bool frequencies_required = false;  ///< solver and solver.frequencies required (rao)
+  bool impulsive_kernel = false;      ///< solver.kernel may be `impulsive` (rao)
+  /// The design's name read between the speed and the solver, from the hull's options (rao: the hull file's
+  /// stem as the default), so that the resolved config keeps its key order.
+  std::function<std::string(const HullOptions&)> name_after_hull;
+};
+
+/// Reads water, hull, speed, solver and mass from root into a spec, checking every key and rule that needs no
+/// hull, and computes nothing (a hull file is read later, by BuildParsedDesign). Consumes exactly these keys:
+/// the caller reads its other blocks and calls root.Finish() before building, so that an error anywhere in
+/// the config is found before any work.
+ParsedDesign ParseDesign(YamlMap& root, const std::string& config_file, const std::string& name,
+                         const DesignReadOptions& options = {});
+
+/// Reads the hull file of a file-source design into parsed.spec.hull.given (once; nothing for a parametric
+/// one).
+void ReadHullFile(ParsedDesign& parsed);
+
+/// Reads the hull file of a file-source design (offsets CSV, STL; its errors name the file and line), builds
+/// the design (eval::BuildDesign) and records the mass defaults it took in the resolved config.
+eval::DesignCase BuildParsedDesign(ParsedDesign& parsed);
+
+/// ParseDesign then BuildParsedDesign, for callers whose config holds nothing after the design's blocks.
 /// Reads water, hull, speed, solver and mass from root and builds the hull. Consumes exactly these keys (the
 /// caller calls root.Finish()). With read_speed false the speed is left to the caller (speed_m_s = 0). Errors
 /// are InputError naming the file, key and rule. `config` (optional) receives the options read.

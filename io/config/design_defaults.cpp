@@ -30,6 +30,11 @@ void SkipCampaignBlocks(YamlMap& root, std::vector<std::string>* notes) {
 }
 
 void FillDesignDefaults(YamlMap& root, std::vector<std::string>* notes) {
+  FillDefaultSeas(root, notes);
+  FillDefaultFrequencies(root, notes);
+}
+
+void FillDefaultSeas(YamlMap& root, std::vector<std::string>* notes) {
   YAML::Node raw = root.raw();
   if (!root.Has("seas")) {
     raw["seas"] = DefaultSeas();
@@ -39,20 +44,31 @@ void FillDesignDefaults(YamlMap& root, std::vector<std::string>* notes) {
           "reference paper's): accelerations, MSI and the verdict hold for these head seas only; give the route's "
           "seas (seas:) for its verdict");
   }
+}
+
+void FillDefaultFrequencies(YamlMap& root, std::vector<std::string>* notes) {
+  YAML::Node raw = root.raw();
   const bool has_solver = root.Has("solver");
   if (has_solver && raw["solver"].IsMap() && raw["solver"]["frequencies"]) return;
   // A throw-away read of the design (the real read follows, with the filled-in tree) for L and U.
   const YAML::Node copy = YAML::Clone(raw);
   YamlMap probe(copy, "", root.file(), YAML::Node(YAML::NodeType::Map));
-  eval::DesignCase d;
+  // Only the hull at rest and the speed: no mass, no running attitude (the real read builds the design once).
+  hull::Hydrostatics hs;
+  double speed_m_s = 0.0;
+  double g_m_s2 = 0.0;
   try {
-    d = LoadDesignCase(probe, root.file(), "design");
-  } catch (const InputError&) {
+    ParsedDesign p = ParseDesign(probe, root.file(), "design");
+    ReadHullFile(p);
+    hs = hull::ComputeHydrostatics(eval::BuildHull(p.spec, nullptr), p.spec.water.rho_kg_m3);
+    speed_m_s = p.spec.speed.MetresPerSecond(hs.L_m, p.spec.water.g_m_s2);
+    g_m_s2 = p.spec.water.g_m_s2;
+  } catch (const std::exception&) {
     return;  // the clone has no line numbers: the real read names the same fault with its line
   }
   sk::FrequencySpec grid;
   try {
-    grid = eval::DesignFrequencyGrid(d.hydrostatics.L_m, d.speed_m_s, d.water.g_m_s2);
+    grid = eval::DesignFrequencyGrid(hs.L_m, speed_m_s, g_m_s2);
   } catch (const std::invalid_argument& e) {
     throw InputError(root.file() + ": " + e.what());
   }
@@ -65,8 +81,8 @@ void FillDesignDefaults(YamlMap& root, std::vector<std::string>* notes) {
   raw["solver"]["frequencies"]["range"] = range;
   if (notes) {
     std::ostringstream s;
-    s << "solver.frequencies: " << grid.values.size() << " wave frequencies, omega " << grid.values.front() << " to "
-      << grid.values.back() << " rad/s (default grid of L " << d.hydrostatics.L_m << " m and U " << d.speed_m_s
+    s << "solver.frequencies: " << grid.values.size() << " wave frequencies, omega " << grid.values.front()
+      << " to " << grid.values.back() << " rad/s (default grid of L " << hs.L_m << " m and U " << speed_m_s
       << " m/s): the RAOs are computed at these frequencies; a peak the grid under-samples is a warning";
     notes->push_back(s.str());
   }

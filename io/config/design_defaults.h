@@ -22,9 +22,13 @@ YAML::Node DefaultSeas();
 /// one note each: a campaign config or best.yaml runs as the design it describes.
 void SkipCampaignBlocks(YamlMap& root, std::vector<std::string>* notes);
 
-/// Fills root's raw tree in place: `seas` when absent, `solver.frequencies` when absent (the hull is built once
-/// to find L and U; its errors are the config's). Appends one line per default taken to *notes.
+/// Fills root's raw tree in place: `seas` when absent, `solver.frequencies` when absent (the hull at rest is
+/// built once to find L and U, without mass or running attitude; its errors are left to the real read).
+/// Appends one line per default taken to *notes. FillDesignDefaults is FillDefaultSeas then
+/// FillDefaultFrequencies; a caller that checks the whole config first puts its check between them.
 void FillDesignDefaults(YamlMap& root, std::vector<std::string>* notes);
+void FillDefaultSeas(YamlMap& root, std::vector<std::string>* notes);
+void FillDefaultFrequencies(YamlMap& root, std::vector<std::string>* notes);
 
 /// One line per model default the design took (solver Cs, sections and panels; mass LCG, k_yy, KG; msi), each
 /// with its value and its effect on the results: raw is the config as written (after FillDesignDefaults),

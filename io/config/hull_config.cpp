@@ -3,6 +3,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "evaluation/design_spec.h"
 #include "evaluation/hull_plausibility.h"
 #include "io/config/config_path.h"
 #include "io/formats/input_limits.h"
@@ -113,16 +114,8 @@ hull::HullForm LoadHull(const HullOptions& o, const std::string& config_file, st
   auto keep = [&](const std::vector<std::string>& w) {
     if (warnings) warnings->insert(warnings->end(), w.begin(), w.end());
   };
-  if (o.source == HullOptions::Source::kParametric) {
-    hull::HullForm h;
-    try {
-      h = hull::GenerateHull(o.design);
-    } catch (const std::logic_error& e) {  // invalid_argument and domain_error
-      throw InputError(config_file + ": key 'hull.parametric': " + e.what());
-    }
-    keep(eval::CheckHull(h, config_file + ": key 'hull.parametric'"));
-    return h;
-  }
+  if (o.source == HullOptions::Source::kParametric)
+    return eval::GenerateParametricHull(o.design, config_file, warnings);
   hull::HullForm h;
   h.draught_m = o.draught_m;
   h.length_m = o.length_m;

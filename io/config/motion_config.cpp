@@ -171,38 +171,55 @@ double ReadKgOverT(YamlMap& mass, double default_value) {
   return r;
 }
 
-hull::MassProperties ParseMassConfig(YamlMap& m, const hull::Hydrostatics& hs,
-                                     std::vector<std::string>* warnings) {
-  hull::MassProperties p;
-  p.mass_kg = m.Number("mass_kg", hs.displacement_kg);
-  if (!(p.mass_kg > 0.0)) m.Fail("mass_kg", "must be > 0");
-  p.lcg_m_from_ap = m.Number("lcg_m_from_ap", hs.lcb_m_from_ap);
-  const double x0 = hs.x_ap_m, x1 = hs.x_ap_m + hs.L_m;
-  if (p.lcg_m_from_ap < x0 || p.lcg_m_from_ap > x1) {
-    std::ostringstream os;
-    os << "must lie on the waterline length, between " << x0 << " and " << x1 << " m from the AP";
-    m.Fail("lcg_m_from_ap", os.str());
+eval::MassSpec ParseMassSpec(YamlMap& m) {
+  eval::MassSpec p;
+  // Every key's place for the rules that need the hull (BuildDesign); a default is a placeholder in the
+  // resolved tree, filled by RecordResolvedMass once the hull is known, so that the keys keep their order.
+  for (const char* k : {"mass_kg", "lcg_m_from_ap", "kyy_m", "kyy_over_L", "kg_m", "kg_over_T"}) {
+    const YAML::Node n = m.raw()[k];
+    p.where[k] = m.Where(k) + ((n && n.IsScalar()) ? " = " + n.Scalar() : "");
   }
+  YAML::Node r = m.resolved();
+  auto optional = [&](const char* key) -> std::optional<double> {
+    if (m.Has(key)) return m.Number(key);
+    m.Skip(key);
+    r[key] = YAML::Node();
+    return std::nullopt;
+  };
+  p.mass_kg = optional("mass_kg");
+  if (p.mass_kg && !(*p.mass_kg > 0.0)) m.Fail("mass_kg", "must be > 0");
+  p.lcg_m_from_ap = optional("lcg_m_from_ap");
   // The campaigns' ratio keys (a campaign's best.yaml carries them) stand for kyy_m and kg_m; one of each pair.
   if (m.Has("kyy_over_L") && m.Has("kyy_m")) m.Fail("kyy_over_L", "give kyy_m or kyy_over_L, not both");
   if (m.Has("kg_over_T") && m.Has("kg_m")) m.Fail("kg_over_T", "give kg_m or kg_over_T, not both");
   if (m.Has("kyy_over_L")) {
-    p.kyy_m = ReadKyyOverL(m, eval::kDefaultKyyOverL) * hs.L_m;
+    p.kyy_over_L = ReadKyyOverL(m, eval::kDefaultKyyOverL);
   } else {
-    p.kyy_m = m.Number("kyy_m", eval::kDefaultKyyOverL * hs.L_m);
-    if (!(p.kyy_m > 0.0)) m.Fail("kyy_m", "must be > 0 (typically 0.25 L)");
+    p.kyy_m = optional("kyy_m");
+    if (p.kyy_m && !(*p.kyy_m > 0.0)) m.Fail("kyy_m", "must be > 0 (typically 0.25 L)");
   }
   if (m.Has("kg_over_T")) {
-    p.kg_m = ReadKgOverT(m, eval::kDefaultKgOverT) * hs.T_m;
+    p.kg_over_T = ReadKgOverT(m, eval::kDefaultKgOverT);
   } else {
-    p.kg_m = m.Number("kg_m", eval::kDefaultKgOverT * hs.T_m);
+    p.kg_m = optional("kg_m");
   }
-  const bool accept = m.Boolean("accept_mass_mismatch", false);
+  p.accept_mass_mismatch = m.Boolean("accept_mass_mismatch", false);
   m.Finish();
-  for (const auto& f : hull::CheckMassPlausibility(p, hs, accept)) {
-    if (f.refuse) m.Fail(f.quantity, f.message);
-    if (warnings) warnings->push_back(f.message);
-  }
+  return p;
+}
+
+void RecordResolvedMass(YAML::Node resolved, const eval::MassSpec& spec, const hull::MassProperties& mass) {
+  if (!spec.mass_kg) resolved["mass_kg"] = mass.mass_kg;
+  if (!spec.lcg_m_from_ap) resolved["lcg_m_from_ap"] = mass.lcg_m_from_ap;
+  if (!spec.kyy_over_L && !spec.kyy_m) resolved["kyy_m"] = mass.kyy_m;
+  if (!spec.kg_over_T && !spec.kg_m) resolved["kg_m"] = mass.kg_m;
+}
+
+hull::MassProperties ParseMassConfig(YamlMap& m, const hull::Hydrostatics& hs,
+                                     std::vector<std::string>* warnings) {
+  const eval::MassSpec spec = ParseMassSpec(m);
+  const hull::MassProperties p = eval::ResolveMass(spec, hs, m.file(), warnings);
+  RecordResolvedMass(m.resolved(), spec, p);
   return p;
 }
 

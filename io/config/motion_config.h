@@ -28,6 +28,7 @@
 //                                    # error (docs/bad-inputs.md)
 #include <string>
 
+#include "evaluation/design_spec.h"
 #include "evaluation/solver_settings.h"
 #include "io/config/yaml_map.h"
 #include "parametric_hull/hull_form.h"
@@ -51,6 +52,14 @@ SolverConfig ParseSolverConfig(YamlMap& solver, bool frequencies_required = true
 /// `default_value`) and fails naming the key and the rule outside its range.
 double ReadKyyOverL(YamlMap& mass, double default_value);
 double ReadKgOverT(YamlMap& mass, double default_value);
+
+/// Reads `mass` without the hull: the values given, checked by the rules that need no hull (signs, ratio
+/// ranges, one of each pair, no unknown key); the defaults are left to eval::ResolveMass (placeholders in the
+/// resolved tree until RecordResolvedMass).
+eval::MassSpec ParseMassSpec(YamlMap& mass);
+/// Fills the resolved `mass` map's defaults with the values the hull gave them.
+void RecordResolvedMass(YAML::Node resolved_mass, const eval::MassSpec& spec,
+                        const hull::MassProperties& mass);
 
 /// Reads `mass` with defaults from the hydrostatics (recorded in the resolved config). Throws InputError for
 /// non-positive mass or radius of gyration, an LCG outside the hull's length, and the refusals of the mass

@@ -81,10 +81,10 @@ std::unique_ptr<opt::Evaluator> ReadMsiObjective(YamlMap& root, YamlMap& objecti
     for (const char* k : {"hull", "water", "speed", "solver"})
       if (raw[k]) base_only[k] = YAML::Clone(raw[k]);
     YamlMap check(base_only, "", root.file(), YAML::Node(YAML::NodeType::Map));
-    DesignConfig c;
-    LoadDesignCase(check, root.file(), "base design", true, &c);
+    const ParsedDesign base =
+        ParseDesign(check, root.file(), "base design");  // built by eval::CheckBaseDesign
     check.Finish();
-    basis = TrialBasis(c, root.file());
+    basis = TrialBasis(base.config, root.file());
     // The base design's blocks as read (defaults filled in, paths absolute) make config.resolved.yaml complete.
     const YAML::Node read = check.resolved();
     for (const char* k : {"hull", "water", "speed", "solver"}) {

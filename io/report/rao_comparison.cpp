@@ -13,13 +13,21 @@
 
 namespace hullopt::io {
 
-std::optional<MeasuredRao> ReadRaoComparison(YamlMap& root, double Fn, double length_m, double g_m_s2) {
+std::optional<RaoComparisonSource> ParseRaoComparison(YamlMap& root) {
   if (!root.Has("compare")) return std::nullopt;
   YamlMap c = root.Map("compare");
-  const std::string file = ConfigFilePath(c, "tank_rao_csv");
-  MeasuredRao m;
-  m.label = c.String("label", "measured (" + std::filesystem::path(file).filename().string() + ")");
+  RaoComparisonSource s;
+  s.file = ConfigFilePath(c, "tank_rao_csv");
+  s.label = c.String("label", "measured (" + std::filesystem::path(s.file).filename().string() + ")");
+  s.where = c.Where("tank_rao_csv");
   c.Finish();
+  return s;
+}
+
+MeasuredRao ReadRaoComparison(const RaoComparisonSource& source, double Fn, double length_m, double g_m_s2) {
+  const std::string& file = source.file;
+  MeasuredRao m;
+  m.label = source.label;
   const double nan = std::numeric_limits<double>::quiet_NaN();
   std::set<double> speeds;
   for (const auto& p : ReadTankRaoCsv(file)) {
@@ -42,10 +50,16 @@ std::optional<MeasuredRao> ReadRaoComparison(YamlMap& root, double Fn, double le
     }
     char buf[64];
     std::snprintf(buf, sizeof buf, "%.3g", Fn);
-    throw InputError(c.Where("tank_rao_csv") + ": " + file + " has no row at the run's Fn " + buf +
-                     " (rows at Fn " + list + ")");
+    throw InputError(source.where + ": " + file + " has no row at the run's Fn " + buf + " (rows at Fn " +
+                     list + ")");
   }
   return m;
+}
+
+std::optional<MeasuredRao> ReadRaoComparison(YamlMap& root, double Fn, double length_m, double g_m_s2) {
+  const std::optional<RaoComparisonSource> source = ParseRaoComparison(root);
+  if (!source) return std::nullopt;
+  return ReadRaoComparison(*source, Fn, length_m, g_m_s2);
 }
 
 }  // namespace hullopt::io

@@ -180,3 +180,143 @@ def test_a_steep_sea_is_flagged_in_the_evaluation():
     seas = hullopt.evaluate(rao, hull, mass, [{"Hs_m": 1.0, "Tz_s": 5.0}, {"Hs_m": 6.0, "Tz_s": 5.0}])
     assert seas[0]["warnings"] == []
     assert any(w.startswith("Hs/lambda_p = ") for w in seas[1]["warnings"]), seas[1]["warnings"]
+
+
+# A design from Python values (no YAML anywhere) against the CLI's on the same design. The in-process reference
+# is load_design (the CLI's config reader and builder); the binary's files hold 10 (rao.csv) and 6 (msi.csv)
+# significant digits, compared digit for digit.
+# Round-off allowance: both routes run the same operations in the same order, so they agree to the bit; 1e-12
+# of the largest RAO amplitude leaves room only for a difference in the last bits, none for a different design.
+RAO_TOLERANCE = 1e-12
+MASS = {"kyy_over_L": 0.26, "kg_m": 4.0}
+
+
+def design_yaml(solver_line):
+    return hull_yaml(f"solver: {solver_line}\nmass: {{ kyy_over_L: 0.26, kg_m: 4.0 }}\n")
+
+
+def assert_raos_close(a, b):
+    scale = max(np.max(np.abs(b["heave"])), np.max(np.abs(b["pitch"])))
+    np.testing.assert_array_equal(a["omega_rad_s"], b["omega_rad_s"])
+    assert np.max(np.abs(a["heave"] - b["heave"])) <= RAO_TOLERANCE * scale
+    assert np.max(np.abs(a["pitch"] - b["pitch"])) <= RAO_TOLERANCE * scale
+
+
+def test_a_design_from_python_values_matches_the_cli(tmp_path):
+    solver = dict(SOLVER, steady_flow=True)  # the running attitude solved in calm water, once
+    d = hullopt.design(NPL5B, speed_kn=40, mass=MASS, solver=solver, water={"rho_kg_m3": 1025, "g_m_s2": 9.81},
+                       name="npl5b")
+    freqs = ", ".join(str(w) for w in OMEGA)
+    cfg = tmp_path / "npl5b.yaml"
+    cfg.write_text(design_yaml(f"{{ sections: {SOLVER['sections']}, panels: {SOLVER['panels']}, Cs: {SOLVER['Cs']}, "
+                               f"adaptive_grid: off, steady_flow: on, frequencies: {{ omega_rad_s: [{freqs}] }} }}"))
+    ref = hullopt.load_design(str(cfg), "npl5b")
+    assert d.speed_m_s == ref.speed_m_s == SPEED_M_S
+    assert (d.sinkage_m, d.trim_deg) == (ref.sinkage_m, ref.trim_deg)
+    assert d.trim_deg != 0.0  # the attitude was solved, not left at even keel
+    assert (d.mass.kyy_m, d.mass.kg_m, d.mass.lcg_m_from_ap) == (ref.mass.kyy_m, ref.mass.kg_m, ref.mass.lcg_m_from_ap)
+    rao = d.raos(OMEGA)
+    assert_raos_close(rao, ref.raos(OMEGA))
+
+    r = run_cli("rao", str(cfg), "--out", str(tmp_path / "rao"))
+    assert r.returncode == 0, r.stderr
+    rows = csv_rows(tmp_path / "rao" / "rao.csv")
+    assert len(rows) == len(OMEGA)
+    for i, row in enumerate(rows):
+        assert row["heave_amp"] == g10(abs(rao["heave"][i]))
+        assert row["pitch_amp"] == g10(abs(rao["pitch"][i]))
+        assert row["pitch_phase_deg"] == g10(np.degrees(np.angle(rao["pitch"][i])))
+
+
+def test_a_design_from_python_values_has_the_cli_msi(tmp_path):
+    d = hullopt.design(hullopt.DesignVariables(**NPL5B), speed_m_s=SPEED_M_S, mass=MASS, solver=SOLVER)
+    cfg = tmp_path / "npl5b.yaml"
+    cfg.write_text(design_yaml(f"{{ sections: {SOLVER['sections']}, panels: {SOLVER['panels']}, Cs: {SOLVER['Cs']}, "
+                               "adaptive_grid: off }"))
+    seas = [{"Hs_m": 3.0, "Tz_s": 7.5}, {"Hs_m": 1.5, "Tz_s": 6.25}]
+    ev_cfg = tmp_path / "evaluate.yaml"
+    ev_cfg.write_text("designs:\n  - { config: %s, name: npl5b }\nseas:\n  - { Hs_m: 3.0, Tz_s: 7.5 }\n"
+                      "  - { Hs_m: 1.5, Tz_s: 6.25 }\n" % cfg)
+    r = run_cli("evaluate", str(ev_cfg), "--out", str(tmp_path / "ev"))
+    assert r.returncode == 0, r.stderr
+    rows = [row for row in csv_rows(tmp_path / "ev" / "msi.csv") if row["design"] == "npl5b"]
+
+    rao = d.raos()  # the evaluation grid, as `hullopt evaluate` takes it
+    ref = hullopt.load_design(str(cfg), "npl5b").raos()
+    assert_raos_close(rao, ref)
+    ours = hullopt.evaluate(rao, d.hull, d.mass, seas=seas)
+    theirs = hullopt.evaluate(ref, d.hull, d.mass, seas=seas)
+    checked = 0
+    for row in rows:
+        i = next(k for k, s in enumerate(ours) if g6(s["Hs_m"]) == row["Hs_m"])
+        pick = (lambda s: s["mean"]) if row["position"] == "mean" else (
+            lambda s: next(p for p in s["positions"] if p["position"] == row["position"]))
+        a, b = pick(ours[i]), pick(theirs[i])
+        assert a["msi_pct"] == pytest.approx(b["msi_pct"], rel=RAO_TOLERANCE, abs=1e-300)
+        assert row["msi_pct"] == g6(a["msi_pct"]), row
+        assert row["rms_accel_g"] == g6(a["rms_accel_g"]), row
+        checked += 1
+    assert checked >= 8  # 2 seas x (3 positions + mean)
+
+
+def test_a_python_design_takes_its_speed_in_knots_or_metres_per_second():
+    kn = hullopt.design(NPL5B, speed_kn=40, solver={"sections": 10, "panels": 6})
+    m_s = hullopt.design(NPL5B, speed_m_s=SPEED_M_S, solver={"sections": 10, "panels": 6})
+    assert kn.speed_m_s == m_s.speed_m_s == SPEED_M_S
+    with pytest.raises(TypeError, match="not both"):
+        hullopt.design(NPL5B, speed_kn=40, speed_m_s=SPEED_M_S)
+    with pytest.raises(TypeError, match="speed_kn= .* or speed_m_s="):
+        hullopt.design(NPL5B)
+
+
+def test_a_python_design_names_a_bad_key_and_a_bad_value():
+    with pytest.raises(hullopt.InputError, match="unknown key 'sectoins'"):
+        hullopt.design(NPL5B, speed_kn=40, solver={"sectoins": 20})
+    with pytest.raises(hullopt.InputError, match="kyy_over_L"):
+        hullopt.design(NPL5B, speed_kn=40, mass={"kyy_over_L": 0.9})
+    # A rule that needs the hull: the LCG must lie on the generated hull's waterline length.
+    with pytest.raises(hullopt.InputError, match="mass.lcg_m_from_ap"):
+        hullopt.design(NPL5B, speed_kn=40, mass={"lcg_m_from_ap": 1.0e6})
+
+
+def test_raos_as_a_labelled_dataset_whose_summary_is_the_cli_line(tmp_path):
+    d = hullopt.design(NPL5B, speed_kn=40, solver=SOLVER, name="npl5b")
+    ds = d.rao_dataset(OMEGA)
+    assert ds["heave"].dims == ("omega",) and ds["pitch"].dims == ("omega",)
+    assert ds["omega"].attrs["units"] == "rad/s" and ds["omega_e"].attrs["units"] == "rad/s"
+    assert ds["lambda_over_L"].attrs["units"] == "1"
+    assert ds["heave"].attrs["units"] == "m/m" and ds["pitch"].attrs["units"] == "rad/rad"
+    rao = d.raos(OMEGA)
+    np.testing.assert_array_equal(ds["heave"].values, rao["heave"])
+    np.testing.assert_array_equal(ds["omega"].values, rao["omega_rad_s"])
+    assert ds.attrs["speed_m_s"] == SPEED_M_S
+
+    freqs = ", ".join(str(w) for w in OMEGA)
+    cfg = tmp_path / "npl5b.yaml"
+    cfg.write_text(hull_yaml(f"solver: {{ sections: {SOLVER['sections']}, panels: {SOLVER['panels']}, "
+                             f"Cs: {SOLVER['Cs']}, adaptive_grid: off, frequencies: {{ omega_rad_s: [{freqs}] }} }}\n"))
+    r = run_cli("rao", str(cfg), "--out", str(tmp_path / "rao"))
+    assert r.returncode == 0, r.stderr
+    assert r.stdout.startswith(ds.attrs["summary"] + ";"), (r.stdout, ds.attrs["summary"])
+    assert "summary:      hull 'npl5b': heave peak" in repr(ds)  # the repr shows it (cut at the display width)
+
+
+def test_flags_come_through_pythons_warnings():
+    hull = hullopt.generate_hull(hullopt.DesignVariables(**NPL5B))
+    mass = hullopt.mass_properties(hull)
+    rao = hullopt.compute_raos(hull, mass, 40.0, [0.6, 1.0], solver={"sections": 10, "panels": 6})  # 40 "m/s"
+    with pytest.warns(hullopt.HulloptWarning, match=r"Fn_vol = 4\."):
+        ds = hullopt.rao_dataset(rao, hullopt.hydrostatics(hull)["L_m"])
+    assert "Fn_vol = 4." in ds.attrs["warnings"]
+
+
+def test_an_evaluation_as_a_labelled_dataset():
+    d = hullopt.design(NPL5B, speed_kn=40, solver={"sections": 10, "panels": 6})
+    seas = hullopt.evaluate(d.raos(), d.hull, d.mass, seas=[{"Hs_m": 3.0, "Tz_s": 7.5}, {"Hs_m": 1.5, "Tz_s": 6.25}])
+    ds = hullopt.evaluation_dataset(seas, "npl5b")
+    assert ds["msi_pct"].dims == ("sea", "position")
+    assert list(ds["position"].values) == ["forward", "lcg", "transom", "mean"]
+    assert ds["msi_pct"].attrs["units"] == "%" and ds["rms_accel_g"].attrs["units"] == "g"
+    assert ds["Hs_m"].attrs["units"] == "m" and list(ds["Hs_m"].values) == [3.0, 1.5]
+    assert ds["msi_pct"].sel(position="mean").values[0] == seas[0]["mean"]["msi_pct"]
+    assert ds["rms_accel_g"].sel(position="lcg").values[1] == seas[1]["positions"][1]["rms_accel_g"]

@@ -1,24 +1,19 @@
 // A campaign's trial design set field by field is the design a config holding the same values describes: same
 // hull, mass, speed and RAOs to the bit (the reference is the config reader, a separate path), and the same
 // refusal wording for a value the rules refuse.
-#include <catch2/catch.hpp>
-
 #include <yaml-cpp/yaml.h>
+
+#include <catch2/catch.hpp>
 
 #include "evaluation/trial_design.h"
 #include "io/config/design_config.h"
+#include "support/npl5b_config.h"
 
 using namespace hullopt;
 
 namespace {
-const char* kBase =
-    "hull:\n"
-    "  parametric: { type: catamaran, section_style: round_bilge, displacement_t: 1000, L_over_B: 11.0,\n"
-    "                B_over_T: 2.0, Cb: 0.40, Cp: 0.69, Cwp: 0.76, LCB_pct_L: -6.4, LCF_pct_L: -8.3,\n"
-    "                transom_immersion: 0.3, spacing_over_L: 0.25 }\n"
-    "water: { rho_kg_m3: 1025, g_m_s2: 9.81 }\n"
-    "speed: { kn: 40 }\n"
-    "solver: { Cs: 0.065, sections: 12, panels: 6 }\n";
+const std::string kBase =
+    std::string(test::kNpl5bDesignYaml) + "solver: { Cs: 0.065, sections: 12, panels: 6 }\n";
 
 eval::DesignBasis Basis() {
   io::YamlMap root(YAML::Load(kBase), "", "base.yaml", YAML::Node(YAML::NodeType::Map));
