@@ -1,35 +1,96 @@
 // hullopt rao CONFIG --out DIR: heave and pitch RAOs of one hull at one speed in head seas → rao.csv,
-// rao.svg.
+// rao.svg; with solver.headings_deg (method strip_theory_stf) sway, heave, roll, pitch and yaw at each
+// heading from the oblique-sea strip theory → rao.csv with a heading column.
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <sstream>
 
 #include "app/commands.h"
-#include "app/output_options.h"
 #include "app/output_dir.h"
+#include "app/output_options.h"
 #include "app/run_checks.h"
 #include "evaluation/adaptive_frequency_grid.h"
 #include "evaluation/hull_plausibility.h"
 #include "evaluation/strip_attitude.h"
 #include "io/config/design_config.h"
 #include "io/config/hull_config.h"
-#include "io/formats/input_error.h"
 #include "io/config/motion_config.h"
-#include "io/report/rao_comparison.h"
-#include "io/formats/rao_csv_writer.h"
-#include "io/report/rao_plot.h"
 #include "io/config/speed_config.h"
 #include "io/config/water_config.h"
 #include "io/config/yaml_map.h"
+#include "io/formats/input_error.h"
+#include "io/formats/rao_csv_writer.h"
+#include "io/report/rao_comparison.h"
+#include "io/report/rao_plot.h"
 #include "optimizer/rao_peak.h"
 #include "parametric_hull/hydrostatics.h"
+#include "seakeeping/motions/oblique_strip_theory.h"
 #include "seakeeping/motions/rao_solver.h"
 #include "seakeeping/motions/validity_range.h"
 #include "seakeeping/strip/impulsive_strip_kernel.h"
 
 namespace hullopt::app {
 namespace {
+
+// Half the overall beam of the hull's offsets (every body, its centreline offset included) [m].
+double HalfOverallBeam(const hull::HullForm& hull) {
+  double b = 0.0;
+  for (const auto& body : hull.bodies)
+    for (const auto& st : body.stations)
+      for (double y : st.y_m) b = std::max(b, std::fabs(body.y_centre_m) + y);
+  return b;
+}
+
+// What solver.headings_deg and its mass keys give: the headings and the roll radius of gyration.
+struct HeadingRequest {
+  std::vector<double> headings_deg;
+  double kxx_m = 0.0;
+};
+
+// The RAOs of every heading by the oblique-sea strip theory (sk::SolveObliqueStripTheory) on the strips'
+// own stations, written as rao.csv with a heading column. Yaw's radius of gyration is taken as pitch's.
+void WriteObliqueRaos(const HeadingRequest& req, const sk::StripKernel& geometry,
+                      const hull::MassProperties& mass, const hull::Hydrostatics& hs, double draught_m,
+                      double U, const io::WaterOptions& water, const std::vector<double>& omega,
+                      const std::string& hull_name, std::vector<std::string> notes,
+                      const std::string& out_dir) {
+  std::vector<sk::ObliqueStripStation> stations;
+  for (int n = 0; n < geometry.Steps(); ++n)
+    stations.push_back({geometry.x_m[n], geometry.Weight(n), geometry.panels[n]});
+  sk::ObliqueMassProperties m;
+  m.mass_kg = mass.mass_kg;
+  m.x_g_m = mass.lcg_m_from_ap;
+  m.z_g_m = mass.kg_m - draught_m;
+  m.inertia_kg_m2.diagonal() << mass.mass_kg * req.kxx_m * req.kxx_m, mass.mass_kg * mass.kyy_m * mass.kyy_m,
+      mass.mass_kg * mass.kyy_m * mass.kyy_m;
+  sk::ObliqueStripOptions o;
+  o.rho_kg_m3 = water.rho_kg_m3;
+  o.g_m_s2 = water.g_m_s2;
+  o.speed_m_s = U;
+  sk::ObliqueStripResult r;
+  try {
+    r = sk::SolveObliqueStripTheory(stations, m, omega, req.headings_deg, o);
+  } catch (const std::domain_error& e) {
+    throw io::InputError(std::string("cannot compute RAOs: ") + e.what());
+  } catch (const std::invalid_argument& e) {
+    throw io::InputError(std::string("cannot compute RAOs: ") + e.what());
+  }
+  std::ostringstream os;
+  os << "oblique-sea strip theory (STF) at " << req.headings_deg.size()
+     << " headings: no Cs damping, roll with potential damping only (no viscous roll damping), kxx = "
+     << req.kxx_m << " m, kzz = kyy, the given frequencies (no adaptive refinement)";
+  notes.push_back(os.str());
+  try {
+    io::WriteObliqueRaoCsv(OutPath(out_dir, "rao.csv"), r, U, water.g_m_s2, hs.L_m, notes);
+  } catch (const std::domain_error& e) {
+    throw io::InputError(std::string("hull '") + hull_name + "': " + e.what());
+  }
+  Say("hull '%s': RAOs of sway, heave, roll, pitch and yaw at %zu headings x %zu frequencies; wrote rao.csv "
+      "in %s\n",
+      hull_name.c_str(), req.headings_deg.size(), omega.size(), out_dir.c_str());
+}
 
 void RunRao(const std::string& config_file, const std::string& out_dir) {
   auto root = io::YamlMap::LoadFile(config_file);
@@ -38,19 +99,37 @@ void RunRao(const std::string& config_file, const std::string& out_dir) {
   const io::SpeedOptions speed = io::ParseSpeed(root, true);
   std::vector<std::string> input_warnings;
   const hull::HullForm hull = io::LoadHull(hull_opts, config_file, &input_warnings);
-  const std::string hull_name = io::ParseDesignName(root, hull_opts.file.empty()
-                                                              ? std::filesystem::path(config_file).stem().string()
-                                                              : std::filesystem::path(hull_opts.file).stem().string());
+  const std::string hull_name = io::ParseDesignName(
+      root, hull_opts.file.empty() ? std::filesystem::path(config_file).stem().string()
+                                   : std::filesystem::path(hull_opts.file).stem().string());
   auto solver_map = root.Map("solver");
   const std::string kernel_kind =
       solver_map.Choice("kernel", {"transient_green", "impulsive"}, "transient_green");
+  // solver.headings_deg (rao only): read before the solver block is finished.
+  HeadingRequest headings;
+  const bool oblique = solver_map.Has("headings_deg");
+  if (oblique) {
+    headings.headings_deg = solver_map.Numbers("headings_deg");
+    for (double h : headings.headings_deg)
+      if (!(h >= 0.0 && h < 360.0)) {
+        std::ostringstream os;
+        os << "heading " << h << " deg: every heading must lie in [0, 360) (180 head seas, 90 beam seas from "
+           << "starboard; docs/conventions.md)";
+        solver_map.Fail("headings_deg", os.str());
+      }
+  }
   const io::SolverConfig sc = io::ParseSolverConfig(solver_map);
+  if (oblique && sc.rao.method != sk::RaoSolverOptions::Method::kStripTheory)
+    solver_map.Fail("headings_deg",
+                    "applies to method: strip_theory_stf only (add solver.method: strip_theory_stf)");
   if (kernel_kind == "impulsive" && sc.body_potential != sk::BodyPotential::kSourceSum)
-    solver_map.Fail("body_potential", "the impulsive stand-in kernel has the source sum only (use kernel: "
-                                      "transient_green)");
+    solver_map.Fail("body_potential",
+                    "the impulsive stand-in kernel has the source sum only (use kernel: "
+                    "transient_green)");
   if (kernel_kind == "impulsive" && sc.sectional_force == sk::SectionalForce::kPressure)
-    solver_map.Fail("sectional_force", "the impulsive stand-in kernel has the momentum form only (use kernel: "
-                                       "transient_green)");
+    solver_map.Fail("sectional_force",
+                    "the impulsive stand-in kernel has the momentum form only (use kernel: "
+                    "transient_green)");
   hull::Hydrostatics hs;  // at rest: L for Fn and the wavelengths, mass defaults
   try {
     hs = hull::ComputeHydrostatics(hull, water.rho_kg_m3);
@@ -58,6 +137,16 @@ void RunRao(const std::string& config_file, const std::string& out_dir) {
     throw io::InputError("hull '" + hull_name + "': " + e.what());
   }
   auto mass_map = root.MapOrEmpty("mass");
+  if (oblique) {
+    // Roll needs the centre of gravity's height: no default KG with headings.
+    if (!mass_map.Has("kg_m") && !mass_map.Has("kg_over_T"))
+      solver_map.Fail("headings_deg",
+                      "roll needs the height of the centre of gravity: give mass.kg_m (or "
+                      "mass.kg_over_T)");
+    headings.kxx_m = mass_map.Number("kxx_m", 0.35 * 2.0 * HalfOverallBeam(hull));
+    if (!(headings.kxx_m > 0.0))
+      mass_map.Fail("kxx_m", "must be > 0 (typically 0.35 to 0.4 of the overall beam)");
+  }
   const hull::MassProperties mass = io::ParseMassConfig(mass_map, hs, &input_warnings);
   const double U = speed.MetresPerSecond(hs.L_m, water.g_m_s2);
   {
@@ -69,17 +158,19 @@ void RunRao(const std::string& config_file, const std::string& out_dir) {
     env.hull = &hull;
     env.hs = &hs;
     env.mass = &mass;
-    for (auto& w : eval::ApplyEnvelope(eval::CheckEnvelope(env), config_file)) input_warnings.push_back(std::move(w));
+    for (auto& w : eval::ApplyEnvelope(eval::CheckEnvelope(env), config_file))
+      input_warnings.push_back(std::move(w));
   }
   const std::optional<io::MeasuredRao> measured =
       io::ReadRaoComparison(root, U / std::sqrt(water.g_m_s2 * hs.L_m), hs.L_m, water.g_m_s2);
   root.Finish();
   // The strips see the hull at its running attitude (the hull itself at even keel): given, or solved in calm
   // water (solver.steady_flow: on).
-  const hull::RunningAttitude attitude =
-      eval::StripAttitude(hull, mass, U, water, sc, hull_opts.attitude, config_file + ": hull '" + hull_name + "'");
-  const hull::HullForm running = sc.steady_flow ? hull::ApplyRunningAttitude(hull, attitude)
-                                                : io::ApplyHullAttitude(hull_opts, hull, mass.lcg_m_from_ap, config_file);
+  const hull::RunningAttitude attitude = eval::StripAttitude(hull, mass, U, water, sc, hull_opts.attitude,
+                                                             config_file + ": hull '" + hull_name + "'");
+  const hull::HullForm running =
+      sc.steady_flow ? hull::ApplyRunningAttitude(hull, attitude)
+                     : io::ApplyHullAttitude(hull_opts, hull, mass.lcg_m_from_ap, config_file);
   sk::StripKernel geometry;  // panelled once: the check here, then the solver
   try {
     // Sections first: a section that does not reach the waterline is named with its body and station.
@@ -88,13 +179,32 @@ void RunRao(const std::string& config_file, const std::string& out_dir) {
   } catch (const std::exception& e) {
     throw io::InputError("hull '" + hull_name + "': " + e.what());
   }
-  const sk::StripKernelBuilder builder = kernel_kind == "impulsive"
-                                             ? sk::StripKernelBuilder(sk::FillImpulsiveStripKernel)
-                                             : sk::TransientGreenKernelBuilder(sc.sectional_force, sc.body_potential);
+  const sk::StripKernelBuilder builder =
+      kernel_kind == "impulsive" ? sk::StripKernelBuilder(sk::FillImpulsiveStripKernel)
+                                 : sk::TransientGreenKernelBuilder(sc.sectional_force, sc.body_potential);
   const sk::RaoSolverOptions o = eval::RaoOptions(sc, hull_name, sc.cs());
   const auto omega = sk::WaveFrequencies(sc.frequencies, U, water.g_m_s2, hs.L_m);
   CheckOutputDirConfig(out_dir, "rao", root.resolved());
-  CheckRunCost("rao", io::StripWorkFromResolved(root.resolved(), static_cast<long>(omega.size())));
+  CheckRunCost("rao",
+               io::StripWorkFromResolved(
+                   root.resolved(),
+                   static_cast<long>(omega.size() * std::max<std::size_t>(1, headings.headings_deg.size()))));
+  if (oblique) {
+    for (const auto& w : input_warnings)
+      std::fprintf(stderr, "hullopt: warning: hull '%s': %s\n", hull_name.c_str(), w.c_str());
+    PrepareOutputDir(out_dir, "rao", config_file, root.resolved());
+    std::vector<std::string> notes = {"hull: " + hull_name};
+    std::ostringstream fn;
+    fn << "speed U = " << U << " m/s (Fn " << U / std::sqrt(water.g_m_s2 * hs.L_m) << "), method "
+       << eval::MethodName(sc.rao.method) << ", " << sc.rao.sections << " sections x " << sc.rao.panels
+       << " panels";
+    notes.push_back(fn.str());
+    for (const auto& a : hull.adjustments) notes.push_back("adjusted: " + a);
+    for (const auto& w : input_warnings) notes.push_back("warning: " + w);
+    WriteObliqueRaos(headings, geometry, mass, hs, running.draught_m, U, water, omega, hull_name, notes,
+                     out_dir);
+    return;
+  }
   sk::RaoTable t;
   try {
     // solver.adaptive_grid (on by default): the peaks refined from the given grid, the kernel built once.
@@ -107,21 +217,26 @@ void RunRao(const std::string& config_file, const std::string& out_dir) {
   }
   t.warnings.insert(t.warnings.begin(), input_warnings.begin(), input_warnings.end());
   if (sc.rao.method == sk::RaoSolverOptions::Method::kTimeDomainStrip)
-    for (auto& w : sk::ValidityWarnings(U, hs.L_m, water.g_m_s2, t.omega_rad_s)) t.warnings.push_back(std::move(w));
-  for (const auto& w : t.warnings) std::fprintf(stderr, "hullopt: warning: hull '%s': %s\n", hull_name.c_str(), w.c_str());
-  for (const auto& a : hull.adjustments) std::fprintf(stderr, "hullopt: note: hull '%s': %s\n", hull_name.c_str(), a.c_str());
+    for (auto& w : sk::ValidityWarnings(U, hs.L_m, water.g_m_s2, t.omega_rad_s))
+      t.warnings.push_back(std::move(w));
+  for (const auto& w : t.warnings)
+    std::fprintf(stderr, "hullopt: warning: hull '%s': %s\n", hull_name.c_str(), w.c_str());
+  for (const auto& a : hull.adjustments)
+    std::fprintf(stderr, "hullopt: note: hull '%s': %s\n", hull_name.c_str(), a.c_str());
   PrepareOutputDir(out_dir, "rao", config_file, root.resolved());
   std::ostringstream fn;
-  fn << "speed U = " << U << " m/s (Fn " << U / std::sqrt(water.g_m_s2 * hs.L_m) << "), method " << eval::MethodName(sc.rao.method)
-     << ", kernel " << kernel_kind << ", path " << eval::PathName(sc.rao.path)
+  fn << "speed U = " << U << " m/s (Fn " << U / std::sqrt(water.g_m_s2 * hs.L_m) << "), method "
+     << eval::MethodName(sc.rao.method) << ", kernel " << kernel_kind << ", path "
+     << eval::PathName(sc.rao.path)
      << (sc.rao.path == sk::RaoSolverOptions::Path::kTimeMarching
              ? " (time scheme " + eval::TimeSchemeName(sc.rao.marching.scheme) + ")"
              : std::string())
-     << ", " << sc.rao.sections << " sections x "
-     << sc.rao.panels << " panels, Cs = " << sc.cs() << (sc.rao.interaction ? "" : ", bodies without interaction")
+     << ", " << sc.rao.sections << " sections x " << sc.rao.panels << " panels, Cs = " << sc.cs()
+     << (sc.rao.interaction ? "" : ", bodies without interaction")
      << (sc.sectional_force == sk::SectionalForce::kPressure ? ", sectional force: pressure form" : "")
      << (sc.body_potential == sk::BodyPotential::kGreenIdentity ? ", body potential: Green's identity" : "")
-     << (sc.rao.section_formulation == sk::SectionFormulation::kDirect ? ", sections: direct formulation" : "");
+     << (sc.rao.section_formulation == sk::SectionFormulation::kDirect ? ", sections: direct formulation"
+                                                                       : "");
   if (const std::string note = eval::AttitudeNote(attitude, sc); !note.empty()) fn << ", " << note;
   try {
     std::vector<std::string> header = {"hull: " + hull_name, fn.str()};
@@ -131,8 +246,9 @@ void RunRao(const std::string& config_file, const std::string& out_dir) {
   } catch (const std::domain_error& e) {
     throw io::InputError(std::string("hull '") + hull_name + "': " + e.what());
   }
-  const std::string curve =
-      sc.rao.method == sk::RaoSolverOptions::Method::kStripTheory ? "strip theory (STF type)" : "time-domain strip (" + kernel_kind + ")";
+  const std::string curve = sc.rao.method == sk::RaoSolverOptions::Method::kStripTheory
+                                ? "strip theory (STF type)"
+                                : "time-domain strip (" + kernel_kind + ")";
   if (!NoPlotsGiven())  // the figure after the numbers
     io::WriteSvg(io::RaoFigure({t}, {curve}, hs.L_m, "RAOs: " + fn.str(), measured ? &*measured : nullptr),
                  OutPath(out_dir, "rao.svg"));
@@ -155,10 +271,11 @@ void RunRao(const std::string& config_file, const std::string& out_dir) {
 }  // namespace
 
 void AddRaoCommand(CLI::App& app) {
-  AddConfigCommand(app,
-                   {"rao", "heave and pitch RAOs in head seas (rao.csv, rao.svg)",
-                    "YAML config (hull, mass, speed, water, solver, compare)"},
-                   RunRao);
+  AddConfigCommand(
+      app,
+      {"rao", "heave and pitch RAOs in head seas, or all modes at solver.headings_deg (rao.csv, rao.svg)",
+       "YAML config (hull, mass, speed, water, solver, compare)"},
+      RunRao);
 }
 
 }  // namespace hullopt::app
