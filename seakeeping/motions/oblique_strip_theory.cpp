@@ -259,21 +259,21 @@ Eigen::PartialPivLU<Eigen::MatrixXcd> MotionMatrix(double we, const Matrix6d& ma
 }
 
 // The forward-speed solution (U ≠ 0). Salvesen, Tuck & Faltinsen (1970): the sections are solved at the
-// encounter frequency ω_e = ω − kU cosβ (their eq. 4, deep water) and the hydrodynamic force on a section is
+// encounter frequency ω_e = ω − kU cosβ (deep water) and the hydrodynamic force on a section is
 // the 2D force seen through the substantial derivative along the hull, f = (1 − (U/iω_e) ∂/∂x) F_2D, with the
-// section moving at the relative normal velocity (iω_e − U ∂/∂x) of its displacement (STF §3, the m_j terms
+// section moving at the relative normal velocity (iω_e − U ∂/∂x) of its displacement (STF's m_j terms,
 // m_5 = n_3, m_6 = −n_2). Integrating a_j f over the hull by parts gives STF's speed-dependent coefficients
-// with their transom ("aftermost section") terms, for heave–pitch (STF 1970 eqs. 26–33: A35 = −∫ξa33 −
-// (U/ω_e²)B33⁰ + (U/ω_e²)ξ_A b33^A − (U²/ω_e²) a33^A, B35 = −∫ξb33 + U A33⁰ − U ξ_A a33^A − (U²/ω_e²) b33^A,
-// ...) and for sway–roll–yaw (STF 1970 eqs. 37–47: A26 = ∫ξa22 + (U/ω_e²)B22⁰ ..., B46 = ∫ξb24 − U A24⁰ ...,
-// A66 = ∫ξ²a22 + (U²/ω_e²)A22⁰ ...), and the diffraction's speed term (STF eqs. 34–35 and 48–50: the
-// (U/iω_e) h_{j−2} part). The x-derivative is taken on the station grid as strip_theory_stf.h takes it
-// (stations ordered bow to stern, a backward difference per station, whose hull sum telescopes to the
-// transom term exactly): F_jk = Σ_n a_j(ξ_n) [w_n G_n + (U/iω_e)(G_n − G_{n−1})], G_n = Z_n c_k(ξ_n) the
-// section's force for the dof k's velocity c_k = iω_e a_k − U a_k', Z = −(iω_e a + b), G_{−1} = 0 (the bow);
-// a dry station has G = 0. F_jk = ω_e² A_jk − iω_e B_jk. Timman–Newman: with no transom (G = 0 at both ends)
-// and uniform station spacing equal to the weights this gives A_jk(U) = A_kj(−U), B_jk(U) = B_kj(−U) up to
-// the 2D solver's reciprocity.
+// with their transom ("aftermost section") terms, for heave–pitch (STF 1970's heave–pitch coefficients: A35 =
+// −∫ξa33 − (U/ω_e²)B33⁰ + (U/ω_e²)ξ_A b33^A − (U²/ω_e²) a33^A, B35 = −∫ξb33 + U A33⁰ − U ξ_A a33^A −
+// (U²/ω_e²) b33^A, ...) and for sway–roll–yaw (STF 1970's sway–roll–yaw coefficients: A26 = ∫ξa22 +
+// (U/ω_e²)B22⁰ ..., B46 = ∫ξb24 − U A24⁰ ..., A66 = ∫ξ²a22 + (U²/ω_e²)A22⁰ ...), and the diffraction's speed
+// term (STF's exciting forces: the (U/iω_e) h_{j−2} part). The x-derivative is taken on the station grid as
+// strip_theory_stf.h takes it (stations ordered bow to stern, a backward difference per station, whose hull
+// sum telescopes to the transom term exactly): F_jk = Σ_n a_j(ξ_n) [w_n G_n + (U/iω_e)(G_n − G_{n−1})], G_n =
+// Z_n c_k(ξ_n) the section's force for the dof k's velocity c_k = iω_e a_k − U a_k', Z = −(iω_e a + b),
+// G_{−1} = 0 (the bow); a dry station has G = 0. F_jk = ω_e² A_jk − iω_e B_jk. Timman–Newman: with no transom
+// (G = 0 at both ends) and uniform station spacing equal to the weights this gives A_jk(U) = A_kj(−U),
+// B_jk(U) = B_kj(−U) up to the 2D solver's reciprocity.
 void SolveAtSpeed(const std::vector<ObliqueStripStation>& stations, const std::vector<int>& wet,
                   const ObliqueMassProperties& mass, const std::vector<double>& omegas,
                   const std::vector<double>& headings_deg, const ObliqueStripOptions& options,
@@ -339,7 +339,7 @@ void SolveAtSpeed(const std::vector<ObliqueStripStation>& stations, const std::v
           const SectionLoadsAboutCg l = LoadsAboutCg(hydro[e * ns + wet_index[n]], k, beta, rho, g, zg);
           const C phase = std::polar(wt, -k * xi * std::cos(beta));
           // The diffraction potential's pressure −ρ(iω_e − U∂x)φ_D: the Haskind integral at ω_e, so the
-          // zero-speed form's factor ω becomes ω_e (STF eq. 34: ρ ω ζ_a ∫ h_j dx with h_j at ω_e).
+          // zero-speed form's factor ω becomes ω_e (in STF the sectional h_j are taken at ω_e).
           const C unit_phase = std::polar(we / w, -k * xi * std::cos(beta));
           for (int p = 0; p < 3; ++p) d_now[p] = unit_phase * l.diffraction[p];
           for (int d = 1; d < 6; ++d) {
