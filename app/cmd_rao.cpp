@@ -1,5 +1,7 @@
 // hullopt rao CONFIG --out DIR: heave and pitch RAOs of one hull at one speed in head seas → rao.csv,
-// rao.svg.
+// rao.svg; with solver.headings_deg (method strip_theory_stf) sway, heave, roll, pitch and yaw at each
+// heading from the oblique-sea strip theory → rao.csv with a heading column.
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -24,6 +26,7 @@
 #include "io/config/yaml_map.h"
 #include "optimizer/rao_peak.h"
 #include "parametric_hull/hydrostatics.h"
+#include "seakeeping/motions/oblique_strip_theory.h"
 #include "seakeeping/motions/rao_solver.h"
 #include "seakeeping/motions/validity_range.h"
 #include "seakeeping/strip/impulsive_strip_kernel.h"
@@ -31,11 +34,70 @@
 namespace hullopt::app {
 namespace {
 
+// Half the overall beam of the hull's offsets (every body, its centreline offset included) [m].
+double HalfOverallBeam(const hull::HullForm& hull) {
+  double b = 0.0;
+  for (const auto& body : hull.bodies)
+    for (const auto& st : body.stations)
+      for (double y : st.y_m) b = std::max(b, std::fabs(body.y_centre_m) + y);
+  return b;
+}
+
+// What solver.headings_deg and its mass keys give: the headings and the roll radius of gyration.
+struct HeadingRequest {
+  std::vector<double> headings_deg;
+  double kxx_m = 0.0;
+};
+
+// The RAOs of every heading by the oblique-sea strip theory (sk::SolveObliqueStripTheory) on the strips'
+// own stations, written as rao.csv with a heading column. Yaw's radius of gyration is taken as pitch's.
+void WriteObliqueRaos(const HeadingRequest& req, const sk::StripKernel& geometry,
+                      const hull::MassProperties& mass, const hull::Hydrostatics& hs, double draught_m,
+                      double U, const io::WaterOptions& water, const std::vector<double>& omega,
+                      const std::string& hull_name, std::vector<std::string> notes,
+                      const std::string& out_dir) {
+  std::vector<sk::ObliqueStripStation> stations;
+  for (int n = 0; n < geometry.Steps(); ++n)
+    stations.push_back({geometry.x_m[n], geometry.Weight(n), geometry.panels[n]});
+  sk::ObliqueMassProperties m;
+  m.mass_kg = mass.mass_kg;
+  m.x_g_m = mass.lcg_m_from_ap;
+  m.z_g_m = mass.kg_m - draught_m;
+  m.inertia_kg_m2.diagonal() << mass.mass_kg * req.kxx_m * req.kxx_m, mass.mass_kg * mass.kyy_m * mass.kyy_m,
+      mass.mass_kg * mass.kyy_m * mass.kyy_m;
+  sk::ObliqueStripOptions o;
+  o.rho_kg_m3 = water.rho_kg_m3;
+  o.g_m_s2 = water.g_m_s2;
+  o.speed_m_s = U;
+  sk::ObliqueStripResult r;
+  try {
+    r = sk::SolveObliqueStripTheory(stations, m, omega, req.headings_deg, o);
+  } catch (const std::domain_error& e) {
+    throw io::InputError(std::string("cannot compute RAOs: ") + e.what());
+  } catch (const std::invalid_argument& e) {
+    throw io::InputError(std::string("cannot compute RAOs: ") + e.what());
+  }
+  std::ostringstream os;
+  os << "oblique-sea strip theory (STF) at " << req.headings_deg.size()
+     << " headings: no Cs damping, roll with potential damping only (no viscous roll damping), kxx = "
+     << req.kxx_m << " m, kzz = kyy, the given frequencies (no adaptive refinement)";
+  notes.push_back(os.str());
+  try {
+    io::WriteObliqueRaoCsv(OutPath(out_dir, "rao.csv"), r, U, water.g_m_s2, hs.L_m, notes);
+  } catch (const std::domain_error& e) {
+    throw io::InputError(std::string("hull '") + hull_name + "': " + e.what());
+  }
+  Say("hull '%s': RAOs of sway, heave, roll, pitch and yaw at %zu headings x %zu frequencies; wrote rao.csv "
+      "in %s\n",
+      hull_name.c_str(), req.headings_deg.size(), omega.size(), out_dir.c_str());
+}
+
 void RunRao(const std::string& config_file, const std::string& out_dir) {
   auto root = io::YamlMap::LoadFile(config_file);
   io::DesignReadOptions read;
   read.frequencies_required = true;
   read.impulsive_kernel = true;
+  read.headings = true;
   read.name_after_hull = [&](const io::HullOptions& h) {
     return io::ParseDesignName(root, h.file.empty() ? std::filesystem::path(config_file).stem().string()
                                                     : std::filesystem::path(h.file).stem().string());
@@ -57,6 +119,11 @@ void RunRao(const std::string& config_file, const std::string& out_dir) {
   const hull::HullForm& running = design.running_hull;
   const double U = design.speed_m_s;
   std::vector<std::string> input_warnings = design.input_warnings;
+  // solver.headings_deg: the oblique-sea strip theory at every heading, roll with kxx (default from the beam).
+  HeadingRequest headings;
+  headings.headings_deg = parsed.headings_deg;
+  const bool oblique = !headings.headings_deg.empty();
+  if (oblique) headings.kxx_m = parsed.kxx_m ? *parsed.kxx_m : 0.35 * 2.0 * HalfOverallBeam(hull);
   std::optional<io::MeasuredRao> measured;
   if (compare)
     measured = io::ReadRaoComparison(*compare, U / std::sqrt(water.g_m_s2 * hs.L_m), hs.L_m, water.g_m_s2);
@@ -74,7 +141,26 @@ void RunRao(const std::string& config_file, const std::string& out_dir) {
   const sk::RaoSolverOptions o = eval::RaoOptions(sc, hull_name, sc.cs());
   const auto omega = sk::WaveFrequencies(sc.frequencies, U, water.g_m_s2, hs.L_m);
   CheckOutputDirConfig(out_dir, "rao", root.resolved());
-  CheckRunCost("rao", io::StripWorkFromResolved(root.resolved(), static_cast<long>(omega.size())));
+  CheckRunCost("rao",
+               io::StripWorkFromResolved(
+                   root.resolved(),
+                   static_cast<long>(omega.size() * std::max<std::size_t>(1, headings.headings_deg.size()))));
+  if (oblique) {
+    for (const auto& w : input_warnings)
+      std::fprintf(stderr, "hullopt: warning: hull '%s': %s\n", hull_name.c_str(), w.c_str());
+    PrepareOutputDir(out_dir, "rao", config_file, root.resolved());
+    std::vector<std::string> notes = {"hull: " + hull_name};
+    std::ostringstream fn;
+    fn << "speed U = " << U << " m/s (Fn " << U / std::sqrt(water.g_m_s2 * hs.L_m) << "), method "
+       << eval::MethodName(sc.rao.method) << ", " << sc.rao.sections << " sections x " << sc.rao.panels
+       << " panels";
+    notes.push_back(fn.str());
+    for (const auto& a : hull.adjustments) notes.push_back("adjusted: " + a);
+    for (const auto& w : input_warnings) notes.push_back("warning: " + w);
+    WriteObliqueRaos(headings, geometry, mass, hs, running.draught_m, U, water, omega, hull_name, notes,
+                     out_dir);
+    return;
+  }
   sk::RaoTable t;
   try {
     // solver.adaptive_grid (on by default): the peaks refined from the given grid, the kernel built once.
@@ -135,10 +221,11 @@ void RunRao(const std::string& config_file, const std::string& out_dir) {
 }  // namespace
 
 void AddRaoCommand(CLI::App& app) {
-  AddConfigCommand(app,
-                   {"rao", "heave and pitch RAOs in head seas (rao.csv, rao.svg)",
-                    "YAML config (hull, mass, speed, water, solver, compare)"},
-                   RunRao);
+  AddConfigCommand(
+      app,
+      {"rao", "heave and pitch RAOs in head seas, or all modes at solver.headings_deg (rao.csv, rao.svg)",
+       "YAML config (hull, mass, speed, water, solver, compare)"},
+      RunRao);
 }
 
 }  // namespace hullopt::app

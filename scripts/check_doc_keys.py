@@ -61,6 +61,8 @@ for _c in ("rao", "coefficients", "evaluate", "optimize", "explore", "calibrate"
                                                               "solver.adaptive_grid",
                                                               "solver.adaptive_grid_max_passes",
                                                               "solver.adaptive_grid_max_frequencies"]
+# rao's oblique-sea keys, read only with solver.headings_deg.
+READ_WHEN_PRESENT["rao"] += ["solver.headings_deg", "mass.kxx_m"]
 
 
 # Keys that once appeared in the documentation and that every command refuses.

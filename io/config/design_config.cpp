@@ -1,5 +1,7 @@
 #include "io/config/design_config.h"
 
+#include <sstream>
+
 #include "evaluation/design_spec.h"
 #include "io/config/motion_config.h"
 #include "io/config/water_config.h"
@@ -35,8 +37,27 @@ ParsedDesign ParseDesign(YamlMap& root, const std::string& config_file, const st
       p.kernel = sm.Choice("kernel", {"transient_green", "impulsive"}, "transient_green");
     else if (sm.Has("kernel"))
       sm.Choice("kernel", {"transient_green"}, "transient_green");
+    if (o.headings && sm.Has("headings_deg")) {
+      p.headings_deg = sm.Numbers("headings_deg");
+      for (double h : p.headings_deg)
+        if (!(h >= 0.0 && h < 360.0)) {
+          std::ostringstream os;
+          os << "heading " << h << " deg: every heading must lie in [0, 360) (180 head seas, 90 beam seas from "
+             << "starboard; docs/conventions.md)";
+          sm.Fail("headings_deg", os.str());
+        }
+    }
     // Evaluations in seas choose their own frequency grid, so solver.frequencies is optional there.
     s.solver = ParseSolverConfig(sm, o.frequencies_required);
+    if (!p.headings_deg.empty() && s.solver.rao.method != sk::RaoSolverOptions::Method::kStripTheory)
+      sm.Fail("headings_deg", "applies to method: strip_theory_stf only (add solver.method: strip_theory_stf)");
+    if (!p.headings_deg.empty()) {  // roll needs the centre of gravity's height: no default KG with headings
+      const YAML::Node raw = root.raw();
+      const YAML::Node mass = raw["mass"];
+      if (!(mass && mass.IsMap() && (mass["kg_m"] || mass["kg_over_T"])))
+        sm.Fail("headings_deg",
+                "roll needs the height of the centre of gravity: give mass.kg_m (or mass.kg_over_T)");
+    }
     if (p.kernel == "impulsive" && s.solver.body_potential != sk::BodyPotential::kSourceSum)
       sm.Fail("body_potential",
               "the impulsive stand-in kernel has the source sum only (use kernel: "
@@ -47,6 +68,12 @@ ParsedDesign ParseDesign(YamlMap& root, const std::string& config_file, const st
               "transient_green)");
   }
   YamlMap mass_map = root.MapOrEmpty("mass");
+  if (!p.headings_deg.empty()) {
+    if (mass_map.Has("kxx_m")) {
+      p.kxx_m = mass_map.Number("kxx_m");
+      if (!(*p.kxx_m > 0.0)) mass_map.Fail("kxx_m", "must be > 0 (typically 0.35 to 0.4 of the overall beam)");
+    }
+  }
   s.mass = ParseMassSpec(mass_map);
   p.resolved_mass = mass_map.resolved();
   p.config = {s.water, hull_opts, speed, s.solver, s.has_frequencies};

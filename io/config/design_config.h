@@ -3,6 +3,7 @@
 // (optional: defaults 40 sections × 14 panels, Cs 0, periodic path) and mass sections read into an
 // eval::DesignCase.
 #include <functional>
+#include <optional>
 #include <string>
 
 #include "evaluation/design_case.h"
@@ -34,6 +35,10 @@ struct ParsedDesign {
   DesignConfig config;
   YAML::Node resolved_mass;
   std::string kernel = "transient_green";
+  /// With DesignReadOptions::headings: solver.headings_deg (empty when not given) and mass.kxx_m (unset: the
+  /// caller's default from the hull).
+  std::vector<double> headings_deg;
+  std::optional<double> kxx_m;
 };
 
 /// What a command reads of a design besides the common blocks.
@@ -41,6 +46,9 @@ struct DesignReadOptions {
   bool read_speed = true;             ///< false: the speed is left to the caller (speed_m_s = 0)
   bool frequencies_required = false;  ///< solver and solver.frequencies required (rao)
   bool impulsive_kernel = false;      ///< solver.kernel may be `impulsive` (rao)
+  /// solver.headings_deg (oblique seas, method strip_theory_stf) and mass.kxx_m may be given (rao); with
+  /// headings the centre of gravity's height (mass.kg_m or kg_over_T) is required: roll needs it.
+  bool headings = false;
   /// The design's name read between the speed and the solver, from the hull's options (rao: the hull file's
   /// stem as the default), so that the resolved config keeps its key order.
   std::function<std::string(const HullOptions&)> name_after_hull;

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "seakeeping/motions/oblique_strip_theory.h"
 #include "seakeeping/motions/rao_table.h"
 
 namespace hullopt::io {
@@ -18,5 +19,18 @@ std::string FormatRaoCsv(const sk::RaoTable& table, double length_m, const std::
 /// Writes FormatRaoCsv to path. Throws InputError if the file cannot be written.
 void WriteRaoCsv(const std::string& path, const sk::RaoTable& table, double length_m,
                  const std::vector<std::string>& notes);
+
+/// rao.csv of `hullopt rao` with solver.headings_deg (docs/file-formats.md): one row per (heading,
+/// frequency), heading-major, columns exactly
+///   wave_direction_deg,omega_e_rad_s,omega_rad_s,lambda_over_L,heave_amp,heave_phase_deg,pitch_amp,pitch_phase_deg,
+///   sway_amp,sway_phase_deg,roll_amp,roll_phase_deg,yaw_amp,yaw_phase_deg
+/// (the oblique axes of docs/conventions.md: sway + to port, roll + starboard down, yaw + bow to port;
+/// translations per A, rotations per kA). Same throws as FormatRaoCsv.
+std::string FormatObliqueRaoCsv(const sk::ObliqueStripResult& result, double speed_m_s, double g_m_s2,
+                                double length_m, const std::vector<std::string>& notes);
+
+/// Writes FormatObliqueRaoCsv to path. Throws InputError if the file cannot be written.
+void WriteObliqueRaoCsv(const std::string& path, const sk::ObliqueStripResult& result, double speed_m_s,
+                        double g_m_s2, double length_m, const std::vector<std::string>& notes);
 
 }  // namespace hullopt::io

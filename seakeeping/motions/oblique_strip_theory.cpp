@@ -14,28 +14,35 @@ namespace {
 using C = std::complex<double>;
 
 // A 3D dof (1 sway .. 5 yaw as indices) seen by a section at xi = x − x_G: the sectional mode it moves
-// (0 sway, 1 heave, 2 roll about z_G) and the factor of its generalised normal (strip theory neglects n_x):
-// n_5 = −xi n_3 (pitch, + bow down), n_6 = xi n_2 (yaw, + bow to port).
+// (0 sway, 1 heave, 2 roll about z_G), the factor of its generalised normal (strip theory neglects n_x):
+// n_5 = −xi n_3 (pitch, + bow down), n_6 = xi n_2 (yaw, + bow to port), and that factor's slope d/dx (the
+// speed terms' −U ∂x of the section's displacement: STF's m_5 = n_3, m_6 = −n_2).
 struct SectionalMode {
   int mode;
   double factor;
+  double slope;
 };
 SectionalMode ModeOf(int dof, double xi) {
   switch (dof) {
-    case 1: return {0, 1.0};
-    case 2: return {1, 1.0};
-    case 3: return {2, 1.0};
-    case 4: return {1, -xi};
-    default: return {0, xi};
+    case 1:
+      return {0, 1.0, 0.0};
+    case 2:
+      return {1, 1.0, 0.0};
+    case 3:
+      return {2, 1.0, 0.0};
+    case 4:
+      return {1, -xi, -1.0};
+    default:
+      return {0, xi, 1.0};
   }
 }
 
 bool Finite(double v) { return std::isfinite(v); }
 
-// Area integrals over a section (closed by its waterline) of (z − z_G) e^{kz − ik_y y} and y e^{kz − ik_y y}, per
-// unit amplitude without ρg: ∫∫_A g dA = ∮ G n_z dl with G(y, z) = ∫_0^z g(y, z') dz' (divergence theorem; G = 0
-// on the waterline, so the lid adds nothing), n the panel normal (out of the section). Gauss–Legendre along each
-// panel, G in closed form.
+// Area integrals over a section (closed by its waterline) of (z − z_G) e^{kz − ik_y y} and y e^{kz − ik_y y},
+// per unit amplitude without ρg: ∫∫_A g dA = ∮ G n_z dl with G(y, z) = ∫_0^z g(y, z') dz' (divergence
+// theorem; G = 0 on the waterline, so the lid adds nothing), n the panel normal (out of the section).
+// Gauss–Legendre along each panel, G in closed form.
 std::array<C, 2> SectionPressureMoments(const std::vector<Panel>& panels, double k, double ky, double zg) {
   const QuadratureRule& rule = GaussLegendre01(8);
   std::array<C, 2> out{};
@@ -96,8 +103,8 @@ bool ObliqueStripOptions::IsValid(std::string* error) const {
     os << "rho_kg_m3 = " << rho_kg_m3 << " must be a finite number > 0";
   else if (!(g_m_s2 > 0) || !Finite(g_m_s2))
     os << "g_m_s2 = " << g_m_s2 << " must be a finite number > 0";
-  else if (speed_m_s != 0.0)
-    os << "speed_m_s = " << speed_m_s << " must be 0 (oblique-sea strip theory is implemented at zero speed only)";
+  else if (!Finite(speed_m_s))
+    os << "speed_m_s = " << speed_m_s << " must be finite";
   else if (!section.IsValid(&section_error))
     os << "section: " << section_error;
   if (os.str().empty()) return true;
@@ -152,6 +159,214 @@ Matrix6d ObliqueRestoring(const ObliqueHydrostatics& h, double x_g_m, double z_g
   return c;
 }
 
+namespace {
+
+// Every (frequency, station) 2D problem is independent: one parallel loop. hydro[f * wet.size() + s].
+std::vector<SectionHydrodynamics> SolveSections(const std::vector<ObliqueStripStation>& stations,
+                                                const std::vector<int>& wet,
+                                                const std::vector<double>& omegas,
+                                                const FrequencyDomainOptions& so) {
+  const int nf = static_cast<int>(omegas.size()), ns = static_cast<int>(wet.size());
+  std::vector<SectionHydrodynamics> hydro(static_cast<std::size_t>(nf) * ns);
+  std::exception_ptr failure = nullptr;
+#pragma omp parallel for schedule(dynamic, 1)
+  for (int job = 0; job < nf * ns; ++job) {
+    try {
+      hydro[job] = SolveSectionFrequencyDomain({stations[wet[job % ns]].panels}, omegas[job / ns], so);
+    } catch (...) {
+#pragma omp critical(oblique_strip_sections)
+      if (!failure) failure = std::current_exception();
+    }
+  }
+  if (failure) std::rethrow_exception(failure);
+  return hydro;
+}
+
+// The sectional coefficients about the CG's height and their strip sums (no speed terms) at one frequency,
+// from hydro[first .. first + wet.size()).
+ObliqueFrequencyResult FrequencyCoefficients(const std::vector<ObliqueStripStation>& stations,
+                                             const std::vector<int>& wet,
+                                             const std::vector<SectionHydrodynamics>& hydro,
+                                             std::size_t first, double w, double g, double x_g, double zg) {
+  // Roll about the CG's height: n_4' = n_4 + z_G n_2, so every sectional row and column of roll gains z_G
+  // times sway's.
+  Eigen::Matrix3d t = Eigen::Matrix3d::Identity();
+  t(2, 0) = zg;
+  ObliqueFrequencyResult fr;
+  fr.omega_rad_s = w;
+  fr.k_per_m = w * w / g;
+  fr.sections.resize(stations.size());
+  for (std::size_t s = 0; s < wet.size(); ++s) {
+    const SectionHydrodynamics& h = hydro[first + s];
+    ObliqueSectionCoefficients& sc = fr.sections[wet[s]];
+    sc.added_mass = t * h.added_mass * t.transpose();
+    sc.damping = t * h.damping * t.transpose();
+    const double x = stations[wet[s]].x_m - x_g, wt = stations[wet[s]].weight_m;
+    for (int d = 1; d < 6; ++d)
+      for (int e = 1; e < 6; ++e) {
+        const SectionalMode md = ModeOf(d, x), me = ModeOf(e, x);
+        const double c = wt * md.factor * me.factor;
+        fr.added_mass(d, e) += c * sc.added_mass(md.mode, me.mode);
+        fr.damping(d, e) += c * sc.damping(md.mode, me.mode);
+      }
+  }
+  return fr;
+}
+
+// A section's Froude–Krylov and diffraction loads from the wave Re[A e^{i(ωt − k x cosβ − k sinβ y)}] about
+// y = z = 0 (SectionWaveLoadIntegrals), moved to roll about z_G.
+struct SectionLoadsAboutCg {
+  std::array<C, 3> froude_krylov;
+  std::array<C, 3> diffraction;
+};
+SectionLoadsAboutCg LoadsAboutCg(const SectionHydrodynamics& hydro, double k, double beta, double rho,
+                                 double g, double zg) {
+  const SectionWaveLoads l = SectionWaveLoadIntegrals(hydro, k, k * std::sin(beta), rho, g);
+  return {{l.froude_krylov[0], l.froude_krylov[1], l.froude_krylov[2] + zg * l.froude_krylov[0]},
+          {l.diffraction[0], l.diffraction[1], l.diffraction[2] + zg * l.diffraction[0]}};
+}
+
+// The n_x parts of the Froude–Krylov pitch and yaw moments of one section
+// (options.longitudinal_froude_krylov): −∫∫ p (z − z_G) n_x dS = −∫∫∫ (z − z_G) ∂p/∂x dV and ∫∫ p y n_x dS =
+// ∫∫∫ y ∂p/∂x dV, with ∂p/∂x = −ik cosβ p (the waterplane closing the volume has n_x = 0). Added to
+// wr.froude_krylov[4], [5] times phase.
+void AddLongitudinalFroudeKrylov(const std::vector<Panel>& panels, double k, double beta, double rho,
+                                 double g, double zg, C phase, ObliqueWaveResult& wr) {
+  const std::array<C, 2> m = SectionPressureMoments(panels, k, k * std::sin(beta), zg);
+  const C ikc(0.0, k * std::cos(beta) * rho * g);
+  wr.froude_krylov[4] += phase * ikc * m[0];
+  wr.froude_krylov[5] -= phase * ikc * m[1];
+}
+
+// Excitation = Froude–Krylov + diffraction, then the 5-dof solve; rotations per wave slope kA.
+void SolveWave(const Eigen::PartialPivLU<Eigen::MatrixXcd>& lu, double k, ObliqueWaveResult& wr) {
+  Eigen::VectorXcd rhs(5);
+  for (int d = 1; d < 6; ++d) {
+    wr.excitation[d] = wr.froude_krylov[d] + wr.diffraction[d];
+    rhs[d - 1] = wr.excitation[d];
+  }
+  const Eigen::VectorXcd x = lu.solve(rhs);
+  for (int d = 1; d < 6; ++d) wr.rao[d] = d >= 3 ? x[d - 1] / k : x[d - 1];
+}
+
+Eigen::PartialPivLU<Eigen::MatrixXcd> MotionMatrix(double we, const Matrix6d& mass,
+                                                   const Matrix6d& added_mass, const Matrix6d& damping,
+                                                   const Matrix6d& restoring) {
+  // The 5-dof equations (sway..yaw): [−ω_e²(M + A) + iω_e B + C] X = F.
+  const Eigen::MatrixXcd z =
+      (-we * we * (mass + added_mass)).cast<C>() + C(0.0, we) * damping.cast<C>() + restoring.cast<C>();
+  return Eigen::PartialPivLU<Eigen::MatrixXcd>(z.bottomRightCorner(5, 5));
+}
+
+// The forward-speed solution (U ≠ 0). Salvesen, Tuck & Faltinsen (1970): the sections are solved at the
+// encounter frequency ω_e = ω − kU cosβ (deep water) and the hydrodynamic force on a section is
+// the 2D force seen through the substantial derivative along the hull, f = (1 − (U/iω_e) ∂/∂x) F_2D, with the
+// section moving at the relative normal velocity (iω_e − U ∂/∂x) of its displacement (STF's m_j terms,
+// m_5 = n_3, m_6 = −n_2). Integrating a_j f over the hull by parts gives STF's speed-dependent coefficients
+// with their transom ("aftermost section") terms, for heave–pitch (STF 1970's heave–pitch coefficients: A35 =
+// −∫ξa33 − (U/ω_e²)B33⁰ + (U/ω_e²)ξ_A b33^A − (U²/ω_e²) a33^A, B35 = −∫ξb33 + U A33⁰ − U ξ_A a33^A −
+// (U²/ω_e²) b33^A, ...) and for sway–roll–yaw (STF 1970's sway–roll–yaw coefficients: A26 = ∫ξa22 +
+// (U/ω_e²)B22⁰ ..., B46 = ∫ξb24 − U A24⁰ ..., A66 = ∫ξ²a22 + (U²/ω_e²)A22⁰ ...), and the diffraction's speed
+// term (STF's exciting forces: the (U/iω_e) h_{j−2} part). The x-derivative is taken on the station grid as
+// strip_theory_stf.h takes it (stations ordered bow to stern, a backward difference per station, whose hull
+// sum telescopes to the transom term exactly): F_jk = Σ_n a_j(ξ_n) [w_n G_n + (U/iω_e)(G_n − G_{n−1})], G_n =
+// Z_n c_k(ξ_n) the section's force for the dof k's velocity c_k = iω_e a_k − U a_k', Z = −(iω_e a + b),
+// G_{−1} = 0 (the bow); a dry station has G = 0. F_jk = ω_e² A_jk − iω_e B_jk. Timman–Newman: with no transom
+// (G = 0 at both ends) and uniform station spacing equal to the weights this gives A_jk(U) = A_kj(−U),
+// B_jk(U) = B_kj(−U) up to the 2D solver's reciprocity.
+void SolveAtSpeed(const std::vector<ObliqueStripStation>& stations, const std::vector<int>& wet,
+                  const ObliqueMassProperties& mass, const std::vector<double>& omegas,
+                  const std::vector<double>& headings_deg, const ObliqueStripOptions& options,
+                  const FrequencyDomainOptions& so, ObliqueStripResult& out) {
+  const double U = options.speed_m_s, rho = options.rho_kg_m3, g = options.g_m_s2, zg = mass.z_g_m;
+  const std::size_t nh = headings_deg.size(), nf = omegas.size(), ns = wet.size();
+  // Encounter frequencies, each distinct one solved once.
+  std::vector<double> distinct;
+  std::vector<std::size_t> entry(nh * nf);
+  for (std::size_t hd = 0; hd < nh; ++hd)
+    for (std::size_t f = 0; f < nf; ++f) {
+      const double w = omegas[f], beta = headings_deg[hd] * M_PI / 180.0;
+      const double we = w - w * w / g * U * std::cos(beta);
+      if (!(we > 0.0)) {
+        std::ostringstream os;
+        os << "oblique strip theory: encounter frequency omega_e = " << we << " rad/s <= 0 at omega = " << w
+           << " rad/s, heading " << headings_deg[hd] << " deg, speed " << U
+           << " m/s (following and quartering seas with omega_e <= 0 are not solved)";
+        throw std::domain_error(os.str());
+      }
+      const auto it = std::find(distinct.begin(), distinct.end(), we);
+      entry[hd * nf + f] = static_cast<std::size_t>(it - distinct.begin());
+      if (it == distinct.end()) distinct.push_back(we);
+    }
+  const std::vector<SectionHydrodynamics> hydro = SolveSections(stations, wet, distinct, so);
+  for (std::size_t e = 0; e < distinct.size(); ++e)
+    out.frequencies.push_back(
+        FrequencyCoefficients(stations, wet, hydro, e * ns, distinct[e], g, mass.x_g_m, zg));
+  // Stations bow to stern (the order the strip passes them), and each one's wet index (−1: dry).
+  std::vector<int> order(stations.size()), wet_index(stations.size(), -1);
+  for (std::size_t n = 0; n < order.size(); ++n) order[n] = static_cast<int>(n);
+  std::stable_sort(order.begin(), order.end(),
+                   [&](int a, int b) { return stations[a].x_m > stations[b].x_m; });
+  for (std::size_t s = 0; s < ns; ++s) wet_index[wet[s]] = static_cast<int>(s);
+
+  out.waves.resize(nh * nf);
+  for (std::size_t hd = 0; hd < nh; ++hd)
+    for (std::size_t f = 0; f < nf; ++f) {
+      const std::size_t e = entry[hd * nf + f];
+      const ObliqueFrequencyResult& fr = out.frequencies[e];
+      const double w = omegas[f], k = w * w / g, we = distinct[e], beta = headings_deg[hd] * M_PI / 180.0;
+      const C iwe(0.0, we), s = U / iwe;
+      ObliqueWaveResult& wr = out.waves[hd * nf + f];
+      wr.heading_deg = headings_deg[hd];
+      wr.omega_rad_s = w;
+      wr.omega_e_rad_s = we;
+      wr.frequency_entry = e;
+      Eigen::Matrix<C, 6, 6> force = Eigen::Matrix<C, 6, 6>::Zero();  // ω_e² A − iω_e B
+      std::array<std::array<C, 3>, 6> g_prev{}, g_now{};              // G per dof k, sectional mode p
+      std::array<C, 3> d_prev{}, d_now{};                             // diffraction per unit length
+      for (const int n : order) {
+        const ObliqueStripStation& st = stations[n];
+        const double xi = st.x_m - mass.x_g_m, wt = st.weight_m;
+        const ObliqueSectionCoefficients& sc = fr.sections[n];
+        const Eigen::Matrix3cd z = -(iwe * sc.added_mass.cast<C>() + sc.damping.cast<C>());
+        for (int kd = 1; kd < 6; ++kd) {
+          const SectionalMode mk = ModeOf(kd, xi);
+          const C ck = iwe * mk.factor - U * mk.slope;
+          for (int p = 0; p < 3; ++p) g_now[kd][p] = z(p, mk.mode) * ck;
+        }
+        d_now = {};
+        if (wet_index[n] >= 0) {
+          const SectionLoadsAboutCg l = LoadsAboutCg(hydro[e * ns + wet_index[n]], k, beta, rho, g, zg);
+          const C phase = std::polar(wt, -k * xi * std::cos(beta));
+          // The diffraction potential's pressure −ρ(iω_e − U∂x)φ_D: the Haskind integral at ω_e, so the
+          // zero-speed form's factor ω becomes ω_e (in STF the sectional h_j are taken at ω_e).
+          const C unit_phase = std::polar(we / w, -k * xi * std::cos(beta));
+          for (int p = 0; p < 3; ++p) d_now[p] = unit_phase * l.diffraction[p];
+          for (int d = 1; d < 6; ++d) {
+            const SectionalMode md = ModeOf(d, xi);
+            wr.froude_krylov[d] += phase * md.factor * l.froude_krylov[md.mode];
+          }
+          if (options.longitudinal_froude_krylov)
+            AddLongitudinalFroudeKrylov(st.panels, k, beta, rho, g, zg, phase, wr);
+        }
+        for (int d = 1; d < 6; ++d) {
+          const SectionalMode md = ModeOf(d, xi);
+          const int p = md.mode;
+          for (int kd = 1; kd < 6; ++kd)
+            force(d, kd) += md.factor * (wt * g_now[kd][p] + s * (g_now[kd][p] - g_prev[kd][p]));
+          wr.diffraction[d] += md.factor * (wt * d_now[p] + s * (d_now[p] - d_prev[p]));
+        }
+        g_prev = g_now;
+        d_prev = d_now;
+      }
+      wr.added_mass = force.real() / (we * we);
+      wr.damping = -force.imag() / we;
+      SolveWave(MotionMatrix(we, out.mass, wr.added_mass, wr.damping, out.restoring), k, wr);
+    }
+}
+
+}  // namespace
+
 ObliqueStripResult SolveObliqueStripTheory(const std::vector<ObliqueStripStation>& stations,
                                            const ObliqueMassProperties& mass,
                                            const std::vector<double>& omegas,
@@ -163,7 +378,8 @@ ObliqueStripResult SolveObliqueStripTheory(const std::vector<ObliqueStripStation
   if (omegas.empty()) throw std::invalid_argument("oblique strip theory: the frequency list is empty");
   for (double w : omegas)
     if (!(w > 0) || !Finite(w))
-      throw std::invalid_argument("oblique strip theory: omega = " + std::to_string(w) + " rad/s must be > 0");
+      throw std::invalid_argument("oblique strip theory: omega = " + std::to_string(w) +
+                                  " rad/s must be > 0");
   for (double b : headings_deg)
     if (!Finite(b)) throw std::invalid_argument("oblique strip theory: a heading is not finite");
   std::vector<int> wet;
@@ -187,87 +403,43 @@ ObliqueStripResult SolveObliqueStripTheory(const std::vector<ObliqueStripStation
   out.restoring = ObliqueRestoring(out.hydrostatics, mass.x_g_m, zg, rho, g);
   out.mass.diagonal().head<3>().setConstant(mass.mass_kg);
   out.mass.bottomRightCorner<3, 3>() = mass.inertia_kg_m2;
-
-  // Every (frequency, station) 2D problem is independent: one parallel loop, then the serial assembly.
-  const int nf = static_cast<int>(omegas.size()), ns = static_cast<int>(wet.size());
-  std::vector<SectionHydrodynamics> hydro(static_cast<std::size_t>(nf) * ns);
-  std::exception_ptr failure = nullptr;
-#pragma omp parallel for schedule(dynamic, 1)
-  for (int job = 0; job < nf * ns; ++job) {
-    try {
-      hydro[job] = SolveSectionFrequencyDomain({stations[wet[job % ns]].panels}, omegas[job / ns], so);
-    } catch (...) {
-#pragma omp critical(oblique_strip_sections)
-      if (!failure) failure = std::current_exception();
-    }
+  if (options.speed_m_s != 0.0) {
+    SolveAtSpeed(stations, wet, mass, omegas, headings_deg, options, so, out);
+    return out;
   }
-  if (failure) std::rethrow_exception(failure);
 
-  // Roll about the CG's height: n_4' = n_4 + z_G n_2, so every sectional row and column of roll gains z_G
-  // times sway's.
-  Eigen::Matrix3d t = Eigen::Matrix3d::Identity();
-  t(2, 0) = zg;
+  const int nf = static_cast<int>(omegas.size()), ns = static_cast<int>(wet.size());
+  const std::vector<SectionHydrodynamics> hydro = SolveSections(stations, wet, omegas, so);
   const std::size_t nh = headings_deg.size();
   out.waves.resize(nh * nf);
   for (int f = 0; f < nf; ++f) {
-    ObliqueFrequencyResult& fr = out.frequencies.emplace_back();
-    const double w = omegas[f], k = w * w / g;
-    fr.omega_rad_s = w;
-    fr.k_per_m = k;
-    fr.sections.resize(stations.size());
-    for (int s = 0; s < ns; ++s) {
-      const SectionHydrodynamics& h = hydro[f * ns + s];
-      ObliqueSectionCoefficients& sc = fr.sections[wet[s]];
-      sc.added_mass = t * h.added_mass * t.transpose();
-      sc.damping = t * h.damping * t.transpose();
-      const double x = stations[wet[s]].x_m - mass.x_g_m, wt = stations[wet[s]].weight_m;
-      for (int d = 1; d < 6; ++d)
-        for (int e = 1; e < 6; ++e) {
-          const SectionalMode md = ModeOf(d, x), me = ModeOf(e, x);
-          const double c = wt * md.factor * me.factor;
-          fr.added_mass(d, e) += c * sc.added_mass(md.mode, me.mode);
-          fr.damping(d, e) += c * sc.damping(md.mode, me.mode);
-        }
-    }
-    // The 5-dof equations (sway..yaw): [−ω²(M + A) + iωB + C] X = F.
-    const Eigen::MatrixXcd z = (-w * w * (out.mass + fr.added_mass)).cast<C>() +
-                               C(0.0, w) * fr.damping.cast<C>() + out.restoring.cast<C>();
-    const Eigen::PartialPivLU<Eigen::MatrixXcd> lu(z.bottomRightCorner(5, 5));
+    const ObliqueFrequencyResult& fr = out.frequencies.emplace_back(
+        FrequencyCoefficients(stations, wet, hydro, f * ns, omegas[f], g, mass.x_g_m, zg));
+    const double w = omegas[f], k = fr.k_per_m;
+    const auto lu = MotionMatrix(w, out.mass, fr.added_mass, fr.damping, out.restoring);
     for (std::size_t hd = 0; hd < nh; ++hd) {
       ObliqueWaveResult& wr = out.waves[hd * nf + f];
       const double beta = headings_deg[hd] * M_PI / 180.0;
       wr.heading_deg = headings_deg[hd];
       wr.omega_rad_s = w;
+      wr.omega_e_rad_s = w;
+      wr.frequency_entry = static_cast<std::size_t>(f);
+      wr.added_mass = fr.added_mass;
+      wr.damping = fr.damping;
       for (int s = 0; s < ns; ++s) {
-        // The section's loads from the wave Re[A e^{i(ωt − k x cosβ − k sinβ y)}] about y = z = 0, moved to
-        // roll about z_G and to the wave phase at the section's x.
-        const SectionWaveLoads l = SectionWaveLoadIntegrals(hydro[f * ns + s], k, k * std::sin(beta), rho, g);
+        // The section's loads moved to the wave phase at the section's x.
+        const SectionLoadsAboutCg l = LoadsAboutCg(hydro[f * ns + s], k, beta, rho, g, zg);
         const double x = stations[wet[s]].x_m - mass.x_g_m, wt = stations[wet[s]].weight_m;
         const C phase = std::polar(wt, -k * x * std::cos(beta));
-        const std::array<C, 3> fk{l.froude_krylov[0], l.froude_krylov[1],
-                                  l.froude_krylov[2] + zg * l.froude_krylov[0]};
-        const std::array<C, 3> df{l.diffraction[0], l.diffraction[1], l.diffraction[2] + zg * l.diffraction[0]};
         for (int d = 1; d < 6; ++d) {
           const SectionalMode md = ModeOf(d, x);
-          wr.froude_krylov[d] += phase * md.factor * fk[md.mode];
-          wr.diffraction[d] += phase * md.factor * df[md.mode];
+          wr.froude_krylov[d] += phase * md.factor * l.froude_krylov[md.mode];
+          wr.diffraction[d] += phase * md.factor * l.diffraction[md.mode];
         }
-        if (options.longitudinal_froude_krylov) {
-          // −∫∫ p (z − z_G) n_x dS = −∫∫∫ (z − z_G) ∂p/∂x dV and ∫∫ p y n_x dS = ∫∫∫ y ∂p/∂x dV, with
-          // ∂p/∂x = −ik cosβ p (the waterplane closing the volume has n_x = 0).
-          const std::array<C, 2> m = SectionPressureMoments(stations[wet[s]].panels, k, k * std::sin(beta), zg);
-          const C ikc(0.0, k * std::cos(beta) * rho * g);
-          wr.froude_krylov[4] += phase * ikc * m[0];
-          wr.froude_krylov[5] -= phase * ikc * m[1];
-        }
+        if (options.longitudinal_froude_krylov)
+          AddLongitudinalFroudeKrylov(stations[wet[s]].panels, k, beta, rho, g, zg, phase, wr);
       }
-      Eigen::VectorXcd rhs(5);
-      for (int d = 1; d < 6; ++d) {
-        wr.excitation[d] = wr.froude_krylov[d] + wr.diffraction[d];
-        rhs[d - 1] = wr.excitation[d];
-      }
-      const Eigen::VectorXcd x = lu.solve(rhs);
-      for (int d = 1; d < 6; ++d) wr.rao[d] = d >= 3 ? x[d - 1] / k : x[d - 1];
+      SolveWave(lu, k, wr);
     }
   }
   return out;

@@ -1,10 +1,12 @@
 #pragma once
-// Zero-speed strip theory in oblique seas for sway, heave, roll, pitch and yaw (Salvesen, Tuck & Faltinsen
-// 1970 with U = 0): each station is a 2D frequency-domain problem (frequency_domain_section.h, modes sway,
-// heave and roll), its coefficients are moved to roll about the centre of gravity and integrated along the
-// hull, the wave excitation is the Froude–Krylov pressure of the oblique wave over the hull (each section's
-// girth and, for pitch and yaw, the longitudinal slope) plus the STF (Haskind) diffraction force, and the 5-dof linear equations give the RAOs. docs/theory.md, "Oblique seas
-// at zero speed", states the formulas.
+// Strip theory in oblique seas for sway, heave, roll, pitch and yaw (Salvesen, Tuck & Faltinsen 1970): each
+// station is a 2D frequency-domain problem (frequency_domain_section.h, modes sway, heave and roll) at the
+// encounter frequency, its coefficients are moved to roll about the centre of gravity and integrated along
+// the hull with STF's forward-speed terms (the substantial derivative along the hull on the station grid, as
+// strip_theory_stf.h; transom terms included), the wave excitation is the Froude–Krylov pressure of the
+// oblique wave over the hull (each section's girth and, for pitch and yaw, the longitudinal slope) plus the
+// STF (Haskind) diffraction force with its speed term, and the 5-dof linear equations give the RAOs.
+// docs/theory.md, "Oblique seas at zero speed" and its "Forward speed" paragraph, states the formulas.
 //
 // Axes and conventions (the same as the 3D panel-method data in data/peers-oblique/, docs/conventions.md):
 // x forward, y to port, z up, origin on the still waterline; dofs 1 surge, 2 sway (+ to port), 3 heave
@@ -12,16 +14,17 @@
 // (right-handed about z: + bow to port); rotations and moments about the centre of gravity (CG). Heading β:
 // the direction the waves travel, from +x counter-clockwise seen from above (180° head seas, 90° beam seas
 // from starboard, travelling towards +y). Wave elevation Re[A e^{i(ωt − k((x − x_G) cosβ + y sinβ))}], deep
-// water k = ω²/g, so phases are leads over the wave crest at the CG. Time factor e^{iωt}.
+// water k = ω²/g, so phases are leads over the wave crest at the CG. At speed U the ship sees the encounter
+// frequency ω_e = ω − kU cosβ; motions are Re[X e^{iω_e t}].
 //
-// Not included (hooks): forward speed (the STF U-terms need the sectional coefficients kept per station in
-// ObliqueFrequencyResult::sections and the encounter frequency; options.speed_m_s must be 0 for now), surge
-// (its row and column stay zero and its RAO is not solved, so the surge–pitch coupling A15, B15 is left out:
-// on the slender Wigley hull the pitch RAO still agrees within 3.4 % with a free-surge 3D solve), viscous roll
-// damping (add it to B(3,3) before solving).
+// Not included (hooks): surge (its row and column stay zero and its RAO is not solved, so the surge–pitch
+// coupling A15, B15 is left out: on the slender Wigley hull the pitch RAO still agrees within 3.4 % with a
+// free-surge 3D solve), viscous roll damping (add it to B(3,3) before solving: roll, at any speed, has potential
+// damping only), encounter frequencies <= 0 (following and quartering seas at speed: refused).
 #include <Eigen/Dense>
 #include <array>
 #include <complex>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -65,7 +68,8 @@ struct ObliqueMassProperties {
 struct ObliqueStripOptions {
   double rho_kg_m3 = 1025.0;  ///< [kg/m³]
   double g_m_s2 = 9.81;       ///< [m/s²]
-  /// [m/s] ship speed: only 0 for now (the forward-speed terms are not implemented).
+  /// [m/s] ship speed U (finite; negative: going astern). At U = 0 the zero-speed path; otherwise the STF speed
+  /// terms, and a (heading, frequency) with encounter frequency <= 0 throws std::domain_error.
   double speed_m_s = 0.0;
   /// Froude–Krylov moment of the incident pressure on the hull's longitudinal slope (the n_x parts of the pitch
   /// normal (z − z_G) n_x and of the yaw normal −y n_x), from the volume form −∫∫∫ (z − z_G) ∂p/∂x dV section by
@@ -104,7 +108,8 @@ struct ObliqueSectionCoefficients {
   Eigen::Matrix3d damping = Eigen::Matrix3d::Zero();     ///< [kg/(m s), kg/s, kg m/s]
 };
 
-/// Radiation coefficients at one frequency (indices 0..5 = dofs 1..6 surge..yaw; surge row and column zero).
+/// Radiation coefficients at one frequency (indices 0..5 = dofs 1..6 surge..yaw; surge row and column zero),
+/// the strip sums without speed terms (at speed: STF's zero-speed parts A⁰, B⁰ at that encounter frequency).
 struct ObliqueFrequencyResult {
   double omega_rad_s = 0.0;
   double k_per_m = 0.0;
@@ -119,6 +124,10 @@ struct ObliqueFrequencyResult {
 struct ObliqueWaveResult {
   double heading_deg = 0.0;
   double omega_rad_s = 0.0;
+  double omega_e_rad_s = 0.0;       ///< [rad/s] encounter frequency ω − kU cosβ (ω at U = 0)
+  std::size_t frequency_entry = 0;  ///< ObliqueStripResult::frequencies entry of its sections' ω_e
+  Matrix6d added_mass = Matrix6d::Zero();  ///< A_jk at ω_e with the speed terms (U = 0: the entry's)
+  Matrix6d damping = Matrix6d::Zero();     ///< B_jk likewise (potential damping only)
   std::array<std::complex<double>, 6> froude_krylov{};
   std::array<std::complex<double>, 6> diffraction{};
   std::array<std::complex<double>, 6> excitation{};
@@ -130,15 +139,21 @@ struct ObliqueStripResult {
   Matrix6d mass = Matrix6d::Zero();       ///< about the CG
   Matrix6d restoring = Matrix6d::Zero();  ///< ObliqueRestoring
   std::vector<double> headings_deg;
-  std::vector<ObliqueFrequencyResult> frequencies;  ///< one per ω, input order
-  std::vector<ObliqueWaveResult> waves;             ///< heading-major: waves[h * frequencies.size() + f]
+  /// U = 0: one per ω, input order. At speed: one per distinct encounter frequency (in order of first use);
+  /// each wave result names its entry (ObliqueWaveResult::frequency_entry).
+  std::vector<ObliqueFrequencyResult> frequencies;
+  std::vector<ObliqueWaveResult> waves;  ///< heading-major: waves[h * (number of ω) + f]
   const ObliqueWaveResult& Wave(std::size_t heading, std::size_t frequency) const {
-    return waves.at(heading * frequencies.size() + frequency);
+    const std::size_t nf = headings_deg.empty() ? 0 : waves.size() / headings_deg.size();
+    if (frequency >= nf) throw std::out_of_range("ObliqueStripResult::Wave: frequency index out of range");
+    return waves.at(heading * nf + frequency);
   }
 };
 
-/// The zero-speed strip-theory solution at every ω (> 0) and heading (degrees, any). Throws
-/// std::invalid_argument for invalid options or mass, an empty frequency list or no wet station.
+/// The strip-theory solution at every ω (> 0) and heading (degrees, any) at options.speed_m_s. Throws
+/// std::invalid_argument for invalid options or mass, an empty frequency list or no wet station, and
+/// std::domain_error at speed for an encounter frequency <= 0. Stations are passed bow to stern in the speed
+/// terms whatever their order (sorted by x); dry stations between wet ones count as G = 0 there.
 ObliqueStripResult SolveObliqueStripTheory(const std::vector<ObliqueStripStation>& stations,
                                            const ObliqueMassProperties& mass,
                                            const std::vector<double>& omega_rad_s,

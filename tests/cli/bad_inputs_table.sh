@@ -477,6 +477,27 @@ awk -F, -v OFS=, 'NR == 1 { for (i = 1; i <= NF; ++i) { if ($i ~ /^msi_pct_/) s[
 mv "$T/edited.csv" "$T/e89/samples.csv"
 run env_resume 1 "samples.csv:7: column 'objective' = 0.01: the design gives" - -- explore "$T/env_resume.yaml" --out "$T/e89" --quiet
 
+# Headings (solver.headings_deg, rao only): outside [0, 360), roll without KG, a method without headings.
+HD="hull: { $D372 }
+mass: { mass_kg: 87.07, lcg_m_from_ap: 1.41, kyy_m: 0.782, kg_m: 0.34 }
+speed: { Fn: 0.5 }
+water: { rho_kg_m3: 1000 }"
+w head_360 "$HD
+solver: { method: strip_theory_stf, sections: 10, panels: 6, headings_deg: [180, 360], frequencies: { lambda_over_L: [1.0, 2.0] } }"
+DESC='`solver.headings_deg: [180, 360]`'
+run head_360 1 "key 'solver.headings_deg'" - -- rao "$T/head_360.yaml" --out "$T/o90"
+w head_nokg "hull: { $D372 }
+mass: { mass_kg: 87.07, lcg_m_from_ap: 1.41, kyy_m: 0.782 }
+speed: { Fn: 0.5 }
+water: { rho_kg_m3: 1000 }
+solver: { method: strip_theory_stf, sections: 10, panels: 6, headings_deg: [180, 90], frequencies: { lambda_over_L: [1.0, 2.0] } }"
+DESC='`solver.headings_deg` without `mass.kg_m` (roll needs KG)'
+run head_nokg 1 "give mass.kg_m" - -- rao "$T/head_nokg.yaml" --out "$T/o91"
+w head_tds "$HD
+solver: { method: time_domain_strip, sections: 10, panels: 6, headings_deg: [180, 90], frequencies: { lambda_over_L: [1.0, 2.0] } }"
+DESC='`solver.headings_deg` with `method: time_domain_strip`'
+run head_tds 1 "applies to method: strip_theory_stf only" - -- rao "$T/head_tds.yaml" --out "$T/o92"
+
 # Not a row: without a mass block, hydrostatics.json's KG is the documented default, the draught.
 w nomass "hull: { parametric: { $P } }"
 if "$BIN" hull "$T/nomass.yaml" --out "$T/nomass" > /dev/null 2>&1; then

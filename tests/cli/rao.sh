@@ -36,6 +36,21 @@ grep -qi nan "$tmp/ok/rao.csv" && fail "NaN in rao.csv"
 [ -s "$tmp/ok/rao.svg" ] || fail "no rao.svg"
 [ -s "$tmp/ok/config.resolved.yaml" ] || fail "no config.resolved.yaml"
 
+# solver.headings_deg (method strip_theory_stf): one row per (heading, frequency) with the heading, sway, roll
+# and yaw columns; symmetric catamaran in head seas: no sway, roll or yaw.
+sed 's/solver: { kernel: impulsive,/solver: { method: strip_theory_stf, headings_deg: [180, 120, 90],/; s/kyy_m: 0.782 }/kyy_m: 0.782, kg_m: 0.34 }/' \
+  "$tmp/ok.yaml" > "$tmp/headings.yaml"
+"$bin" rao "$tmp/headings.yaml" --out "$tmp/headings" || fail "headings run refused"
+header=$(awk '!/^#/ { print; exit }' "$tmp/headings/rao.csv")
+[ "$header" = "wave_direction_deg,omega_e_rad_s,omega_rad_s,lambda_over_L,heave_amp,heave_phase_deg,pitch_amp,pitch_phase_deg,sway_amp,sway_phase_deg,roll_amp,roll_phase_deg,yaw_amp,yaw_phase_deg" ] ||
+  fail "headings rao.csv header: $header"
+[ "$(grep -v '^#' "$tmp/headings/rao.csv" | tail -n +2 | wc -l)" = 9 ] || fail "headings rao.csv should have 3 x 3 rows"
+grep -q "potential damping only" "$tmp/headings/rao.csv" || fail "headings rao.csv does not say roll has potential damping only"
+grep -v '^#' "$tmp/headings/rao.csv" | tail -n +2 | awk -F, '$1 == 180 && ($9 > 1e-9 || $11 > 1e-9 || $13 > 1e-9) { exit 1 }' ||
+  fail "head seas on a symmetric catamaran show sway, roll or yaw"
+grep -v '^#' "$tmp/headings/rao.csv" | tail -n +2 | awk -F, '$1 == 90 && $11 < 0.1 { exit 1 }' ||
+  fail "beam seas without roll"
+
 expect_error() {  # $1: name, $2: config text, $3: text the message must contain
   echo "$2" > "$tmp/$1.yaml"
   if "$bin" rao "$tmp/$1.yaml" --out "$tmp/$1" 2> "$tmp/$1.err"; then fail "$1: accepted"; fi

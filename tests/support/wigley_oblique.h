@@ -1,6 +1,7 @@
 #pragma once
 // The Wigley hull of data/peers-oblique/ (L 3 m, B 0.3 m, T 0.1875 m) as oblique-strip-theory stations, and
 // its mass properties there, for the oblique-sea tests.
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
@@ -33,6 +34,16 @@ inline sk::ObliqueMassProperties WigleyObliqueMass(double kg_m) {
   m.inertia_kg_m2.diagonal() << 75.0 * std::pow(0.35 * kWigleyB, 2), 75.0 * std::pow(0.25 * kWigleyL, 2),
       75.0 * std::pow(0.25 * kWigleyL, 2);
   return m;
+}
+
+/// The largest of |F_d|/|F_3| and |X_d|/(|X_3| + |X_5|) over sway, roll and yaw (d = 2, 4, 6): zero to
+/// rounding for a port–starboard symmetric hull in head or following seas.
+inline double AntisymmetricFraction(const sk::ObliqueWaveResult& w) {
+  const double scale = std::abs(w.excitation[2]), rao_scale = std::abs(w.rao[2]) + std::abs(w.rao[4]);
+  double out = 0.0;
+  for (int d : {1, 3, 5})
+    out = std::max({out, std::abs(w.excitation[d]) / scale, std::abs(w.rao[d]) / rao_scale});
+  return out;
 }
 
 }  // namespace hullopt::test

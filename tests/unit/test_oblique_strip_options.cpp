@@ -1,4 +1,4 @@
-// Input checks of the zero-speed oblique-sea strip theory (seakeeping/motions/oblique_strip_theory.h): options
+// Input checks of the oblique-sea strip theory (seakeeping/motions/oblique_strip_theory.h): options
 // and mass properties name the field and rule; impossible requests throw std::invalid_argument.
 #include <catch2/catch.hpp>
 #include <cmath>
@@ -28,9 +28,11 @@ TEST_CASE("oblique strip options and mass name the field they refuse") {
   std::string e;
   sk::ObliqueStripOptions o;
   CHECK(o.IsValid(&e));
-  o.speed_m_s = 1.0;
+  o.speed_m_s = std::numeric_limits<double>::quiet_NaN();
   CHECK_FALSE(o.IsValid(&e));
   CHECK(Names(e, "speed_m_s"));
+  o.speed_m_s = -2.0;  // any finite speed (negative: astern)
+  CHECK(o.IsValid(&e));
   o = {};
   o.rho_kg_m3 = 0.0;
   CHECK_FALSE(o.IsValid(&e));
@@ -63,8 +65,8 @@ TEST_CASE("oblique strip theory refuses impossible requests") {
                   std::invalid_argument);
   CHECK_THROWS_AS(sk::SolveObliqueStripTheory({{0.0, 1.0, {}}}, Mass(), {1.0}, {90.0}, o), std::invalid_argument);
   sk::ObliqueStripOptions moving;
-  moving.speed_m_s = 2.0;
-  CHECK_THROWS_AS(sk::SolveObliqueStripTheory(OneStation(), Mass(), {1.0}, {90.0}, moving), std::invalid_argument);
+  moving.speed_m_s = 2.0;  // following seas at ω 6: ω_e = ω − ω²U/g < 0
+  CHECK_THROWS_AS(sk::SolveObliqueStripTheory(OneStation(), Mass(), {6.0}, {0.0}, moving), std::domain_error);
   // A valid request with no headings still gives the radiation coefficients.
   const auto r = sk::SolveObliqueStripTheory(OneStation(), Mass(), {1.0, 2.0}, {}, o);
   CHECK(r.frequencies.size() == 2);

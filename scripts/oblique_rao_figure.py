@@ -1,0 +1,98 @@
+#!/usr/bin/python3
+"""RAOs of all five modes over headings 90-180 deg for the Table 1 monohull MONa (Davis & Holloway 2003,
+configs/davis-holloway-2003/hull14_MONa.yaml) at 1000 t and 40 kn, from `hullopt rao` with solver.headings_deg
+(oblique-sea strip theory with the STF speed terms; roll with potential damping only). Writes
+docs/figures/oblique_rao_mona_40kn.svg and prints the peak of each mode per heading.
+Usage: scripts/oblique_rao_figure.py [HULLOPT_BINARY]   (run from the repository root; default build/app/hullopt)
+The mass block is assumed (the config gives none): KG 4.0 m (GM_T about 2 m), kyy 0.25 L, kxx 0.35 B (default).
+"""
+import csv
+import os
+import subprocess
+import sys
+import tempfile
+
+ROOT = os.path.abspath(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+BIN = sys.argv[1] if len(sys.argv) > 1 else os.path.join(ROOT, "build", "app", "hullopt")
+HEADINGS = [180, 165, 150, 135, 120, 105, 90]
+MODES = [("heave_amp", "heave |x3|/A"), ("pitch_amp", "pitch |x5|/kA"), ("sway_amp", "sway |x2|/A"),
+         ("roll_amp", "roll |x4|/kA (potential damping only)"), ("yaw_amp", "yaw |x6|/kA")]
+COLOURS = ["#1f77b4", "#ff7f0e", "#2ca02c", "#d62728", "#9467bd", "#8c564b", "#17becf"]
+
+
+def run():
+    hull = open(os.path.join(ROOT, "configs", "davis-holloway-2003", "hull14_MONa.yaml")).read()
+    hull = hull.split("water:")[0]  # the hull block; water and speed below
+    cfg = hull + """water: { rho_kg_m3: 1025, g_m_s2: 9.81 }
+speed: { kn: 40 }
+mass: { kg_m: 4.0 }
+solver:
+  method: strip_theory_stf
+  headings_deg: [%s]
+  frequencies: { range: { quantity: lambda_over_L, from: 0.4, to: 4.0, count: 60 } }
+""" % ", ".join(str(h) for h in HEADINGS)
+    with tempfile.TemporaryDirectory() as tmp:
+        path = os.path.join(tmp, "mona.yaml")
+        open(path, "w").write(cfg)
+        subprocess.run([BIN, "rao", path, "--out", os.path.join(tmp, "out"), "--quiet"], check=True)
+        lines = [l for l in open(os.path.join(tmp, "out", "rao.csv")) if not l.startswith("#")]
+        notes = [l[2:].strip() for l in open(os.path.join(tmp, "out", "rao.csv")) if l.startswith("# ")]
+    return list(csv.DictReader(lines)), notes
+
+
+def svg(rows, notes):
+    w, h, pw, ph, left, top = 1180, 760, 330, 260, 60, 50
+    out = ['<svg xmlns="http://www.w3.org/2000/svg" width="%d" height="%d" font-family="sans-serif" font-size="11">'
+           % (w, h), '<rect width="100%" height="100%" fill="white"/>',
+           '<text x="%d" y="22" font-size="14">MONa (Table 1 monohull), 1000 t, 40 kn (Fn 0.60): RAOs over headings, '
+           'oblique-sea strip theory (STF), no viscous roll damping</text>' % left]
+    for m, (key, label) in enumerate(MODES):
+        x0 = left + (m % 3) * (pw + 40)
+        y0 = top + (m // 3) * (ph + 70)
+        ymax = max(float(r[key]) for r in rows) * 1.05 or 1.0
+        xmin, xmax = 0.4, 4.0
+        out.append('<rect x="%d" y="%d" width="%d" height="%d" fill="none" stroke="black"/>' % (x0, y0, pw, ph))
+        out.append('<text x="%d" y="%d">%s</text>' % (x0, y0 - 6, label))
+        for t in range(5):
+            yv = ymax * t / 4
+            yy = y0 + ph - ph * t / 4
+            out.append('<text x="%d" y="%.1f" text-anchor="end">%.3g</text>' % (x0 - 4, yy + 4, yv))
+        for xv in [0.5, 1, 1.5, 2, 2.5, 3, 3.5, 4]:
+            xx = x0 + pw * (xv - xmin) / (xmax - xmin)
+            out.append('<text x="%.1f" y="%d" text-anchor="middle">%g</text>' % (xx, y0 + ph + 14, xv))
+        out.append('<text x="%d" y="%d" text-anchor="middle">wavelength / L</text>' % (x0 + pw / 2, y0 + ph + 28))
+        for i, hd in enumerate(HEADINGS):
+            pts = sorted((float(r["lambda_over_L"]), float(r[key])) for r in rows
+                         if abs(float(r["wave_direction_deg"]) - hd) < 1e-9)
+            path = " ".join("%.1f,%.1f" % (x0 + pw * (x - xmin) / (xmax - xmin), y0 + ph - ph * y / ymax)
+                            for x, y in pts if xmin <= x <= xmax)
+            out.append('<polyline fill="none" stroke="%s" stroke-width="1.5" points="%s"/>' % (COLOURS[i], path))
+    lx, ly = left + 2 * (pw + 40), top + ph + 70
+    for i, hd in enumerate(HEADINGS):
+        out.append('<line x1="%d" y1="%d" x2="%d" y2="%d" stroke="%s" stroke-width="2"/>'
+                   % (lx, ly + 18 * i, lx + 25, ly + 18 * i, COLOURS[i]))
+        out.append('<text x="%d" y="%d">%d deg%s</text>' % (lx + 30, ly + 18 * i + 4, hd,
+                                                          " (head seas)" if hd == 180 else " (beam seas)" if hd == 90 else ""))
+    for i, n in enumerate(notes[-3:]):
+        out.append('<text x="%d" y="%d" font-size="9">%s</text>' % (left, h - 40 + 12 * i,
+                                                                  n.replace("&", "&amp;").replace("<", "&lt;")))
+    out.append("</svg>")
+    return "\n".join(out)
+
+
+def main():
+    rows, notes = run()
+    dst = os.path.join(ROOT, "docs", "figures", "oblique_rao_mona_40kn.svg")
+    open(dst, "w").write(svg(rows, notes))
+    print("wrote", os.path.relpath(dst, ROOT))
+    for hd in HEADINGS:
+        sel = [r for r in rows if abs(float(r["wave_direction_deg"]) - hd) < 1e-9]
+        peaks = []
+        for key, _ in MODES:
+            best = max(sel, key=lambda r: float(r[key]))
+            peaks.append("%s %.3g at lambda/L %.2f" % (key.split("_")[0], float(best[key]), float(best["lambda_over_L"])))
+        print("%3d deg: %s" % (hd, "; ".join(peaks)))
+
+
+if __name__ == "__main__":
+    main()
