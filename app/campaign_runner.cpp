@@ -4,6 +4,7 @@
 #include <omp.h>
 #endif
 
+#include <CLI/CLI.hpp>
 #include <algorithm>
 #include <cmath>
 #include <cstdio>

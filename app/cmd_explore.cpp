@@ -1,6 +1,7 @@
 // hullopt explore CONFIG --out DIR: evaluate a Sobol or Latin-hypercube sample of the design box in parallel
 // (OpenMP threads, MPI ranks), log samples.csv in sample order (identical for any thread/rank count),
 // and estimate the sensitivity of the objective to each variable. Resumable like optimize.
+#include <CLI/CLI.hpp>
 #include <algorithm>
 #include <cstdio>
 #include <memory>

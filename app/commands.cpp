@@ -1,5 +1,6 @@
 #include "app/commands.h"
 
+#include <CLI/CLI.hpp>
 #include <memory>
 
 #include "app/output_dir.h"

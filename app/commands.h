@@ -1,10 +1,10 @@
 #pragma once
 // Subcommands of the hullopt executable. Each Add*Command registers its subcommand on the app; its callback
 // throws io::InputError for bad input (printed by main as one line, exit code 1).
-#include <CLI/CLI.hpp>
-
 #include <functional>
 #include <string>
+
+#include "app/cli_app.h"
 
 namespace hullopt::app {
 

@@ -1,5 +1,6 @@
 #include "app/output_options.h"
 
+#include <CLI/CLI.hpp>
 #include <cstdarg>
 #include <cstdio>
 #include <iostream>

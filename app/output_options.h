@@ -3,8 +3,9 @@
 // scripted runs and campaigns; warnings and errors still go to stderr) and --no-plots on the commands that
 // draw figures (the numbers only: no SVG figures and no report.html, which shows them). Campaign commands
 // carry both in CampaignCliOptions (app/campaign_runner.h); the others read them here.
-#include <CLI/CLI.hpp>
 #include <ostream>
+
+#include "app/cli_app.h"
 
 namespace hullopt::app {
 

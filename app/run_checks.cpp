@@ -1,5 +1,6 @@
 #include "app/run_checks.h"
 
+#include <CLI/CLI.hpp>
 #include <cstdio>
 
 #include "app/mpi_context.h"

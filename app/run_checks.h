@@ -2,9 +2,9 @@
 // Checks a command makes once its input is read and before its work starts: the estimated cost of its
 // strip-solver work (io/config/run_cost.h; refused beyond the documented thresholds unless --force) and,
 // through CheckOutputDirConfig, that its output folder holds no other command's or config's results.
-#include <CLI/CLI.hpp>
 #include <string>
 
+#include "app/cli_app.h"
 #include "io/config/run_cost.h"
 
 namespace hullopt::app {

@@ -29,7 +29,8 @@ constexpr double kTolFar = 1e-9;
 
 TEST_CASE("Rankine panel potential and velocity match quadrature", "[rankine]") {
   const Panel p{0.3, -0.2, -0.1, -0.9};
-  for (auto [y, z] : {std::pair{1.5, -0.4}, {-0.8, -1.7}, {0.2, -2.5}, {2.0, -0.05}}) {
+  for (const auto& point : {std::pair{1.5, -0.4}, {-0.8, -1.7}, {0.2, -2.5}, {2.0, -0.05}}) {
+    const double y = point.first, z = point.second;  // named, not a structured binding: the lambdas capture them
     const auto inf = hullopt::sk::RankinePanelInfluence(p, y, z);
     const double phi = Quad(p, [&](double a, double b) { return std::log(std::hypot(y - a, z - b)) / (2 * M_PI); });
     const double vy = Quad(p, [&](double a, double b) {

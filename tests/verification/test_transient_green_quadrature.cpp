@@ -193,7 +193,8 @@ TEST_CASE("panel and time-interval integrals of the kernel match brute-force qua
   const hullopt::sk::Panel panel{0.9, -0.02, 0.5, -0.6};
   const double L = panel.Length();
   const cd e_ia((panel.y2 - panel.y1) / L, (panel.z2 - panel.z1) / L);
-  for (auto [y, z] : {std::pair{-0.7, -0.3}, {1.2, -0.01}, {0.2, -1.5}}) {
+  for (const auto& point : {std::pair{-0.7, -0.3}, {1.2, -0.01}, {0.2, -1.5}}) {
+    const double y = point.first, z = point.second;  // named, not a structured binding: the lambda captures them
     for (double t : {0.3, 2.0, 9.0}) {
       INFO("field (" << y << ", " << z << ") t = " << t);
       // Space: ∫_panel H' ds = i e^{−iα}[H(q2) − H(q1)].
@@ -231,14 +232,18 @@ TEST_CASE("panel memory influences against double quadrature", "[green][verifica
   constexpr double kTolPotential = 1e-8;  // adaptive rule tolerance 1e−10 of O(1) values
   const hullopt::sk::Panel panel{0.8, 0.0, 0.6, -0.25};
   const double L = panel.Length();
-  for (auto [y, z, ny, nz] : {std::array<double, 4>{0.5, -0.01, 0.0, 1.0}, {-0.8, -0.5, 0.6, -0.8}}) {
-    for (auto [s1, s2] : {std::pair{0.0, 0.05}, {1.0, 1.1}, {4.0, 4.1}}) {
+  // Named values, not structured bindings, throughout: the lambdas capture them.
+  for (const auto& field : {std::array<double, 4>{0.5, -0.01, 0.0, 1.0}, {-0.8, -0.5, 0.6, -0.8}}) {
+    const double y = field[0], z = field[1], ny = field[2], nz = field[3];
+    for (const auto& lags : {std::pair{0.0, 0.05}, {1.0, 1.1}, {4.0, 4.1}}) {
+      const double s1 = lags.first, s2 = lags.second;
       INFO("field (" << y << ", " << z << ") lags " << s1 << ".." << s2);
       auto point = [&](double u) {
         return std::pair{panel.y1 + u / L * (panel.y2 - panel.y1), panel.z1 + u / L * (panel.z2 - panel.z1)};
       };
       auto dGdn = [&](double u) {
-        auto [qy, qz] = point(u);
+        const auto q = point(u);
+        const double qy = q.first, qz = q.second;
         return Composite<double>(
             [&](double s) {
               const cd hz = hullopt::sk::TransientGreen(y - qy, z + qz, s, kG).h_z;
@@ -247,7 +252,8 @@ TEST_CASE("panel memory influences against double quadrature", "[green][verifica
             s1, s2, 6);
       };
       auto Gt = [&](double u) {
-        auto [qy, qz] = point(u);
+        const auto q = point(u);
+        const double qy = q.first, qz = q.second;
         return Composite<double>(
             [&](double s) { return hullopt::sk::TransientGreen(y - qy, z + qz, s, kG).h.real(); }, s1, s2, 6);
       };
