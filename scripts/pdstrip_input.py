@@ -83,6 +83,9 @@ def main(argv=None):
     ap.add_argument("--headings", type=float, nargs="+", default=[0.0],
                     help="PDStrip encounter angles in [-90, 90] (0: following; 180 - mu is added)")
     ap.add_argument("--wavelengths", type=float, nargs="+", required=True, help="[m]")
+    ap.add_argument("--x-origin", type=float, default=0.0,
+                    help="[m from AP] where PDStrip's x = 0 is put: its motions are given at its origin, so the CG "
+                         "(the --xg value) makes its heave the heave at the centre of gravity")
     a = ap.parse_args(argv)
 
     stations = []
@@ -107,7 +110,7 @@ def main(argv=None):
         f.write(f"{len(sections)} f {a.draught:.6f}\n")
         for x, c in sections:
             whole = [(-p[0], p[1]) for p in reversed(c[1:])] + c
-            f.write(f"{x:.6f} {len(whole)} 0\n")
+            f.write(f"{x - a.x_origin:.6f} {len(whole)} 0\n")
             f.write(" ".join(f"{p[0]:.6f}" for p in whole) + "\n")
             f.write(" ".join(f"{p[1]:.6f}" for p in whole) + "\n")
     with open(os.path.join(a.out_dir, "pdstrip.inp"), "w") as f:
@@ -117,7 +120,7 @@ def main(argv=None):
         f.write(f"{len(a.headings)} " + " ".join(f"{h:g}" for h in a.headings) + "\n")
         f.write("geometry\n")
         f.write("f\n")
-        f.write(f"{a.mass_t:.6g} {a.xg:.6f} 0.0 {a.zg:.6f} {a.kxx ** 2:.6g} {a.kyy ** 2:.6g} {a.kyy ** 2:.6g} "
+        f.write(f"{a.mass_t:.6g} {a.xg - a.x_origin:.6f} 0.0 {a.zg:.6f} {a.kxx ** 2:.6g} {a.kyy ** 2:.6g} {a.kyy ** 2:.6g} "
                 "0.0 0.0 0.0\n")
         f.write(" ".join("0" for _ in sections) + "\n")
         f.write("0.0 1.0\n")        # steepness 0: linear, no resistance coefficients
