@@ -1,6 +1,8 @@
 // The NPL 5b-like catamaran of the 14-hull study through the public API: hull at 1000 t, hydrostatics,
 // RAOs at 40 kn (20 sections x 8 panels, Cs 0.065), and MSI in a 3 m, Tz 7.5 s JONSWAP head sea.
 #include <hullopt/hullopt.h>
+// Each public header also by its own namespaced path (the package installs them all under include/hullopt/).
+#include <hullopt/seas/wave_spectrum.h>
 
 #include <cstdio>
 #include <exception>

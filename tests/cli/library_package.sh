@@ -9,10 +9,13 @@ trap 'rm -rf "$tmp"' EXIT
 cmake --install "$build_dir" --prefix "$tmp/prefix" > "$tmp/install.log"
 test -f "$tmp/prefix/include/hullopt/hullopt.h"
 test -f "$tmp/prefix/lib/cmake/hullopt/hulloptConfig.cmake"
-# Only the headers the entry header reaches are installed: no io/ or app/ headers.
-if [ -d "$tmp/prefix/include/io" ] || [ -d "$tmp/prefix/include/app" ]; then
+# Every installed header is under include/hullopt/, and only those the entry header reaches: no io/ or app/.
+others=$(ls "$tmp/prefix/include" | grep -vx hullopt || true)
+[ -z "$others" ] || { echo "headers installed outside include/hullopt: $others"; exit 1; }
+if [ -d "$tmp/prefix/include/hullopt/io" ] || [ -d "$tmp/prefix/include/hullopt/app" ]; then
   echo "private headers installed"; exit 1
 fi
+test -f "$tmp/prefix/include/hullopt/seas/wave_spectrum.h"
 # A sanitized build (HULLOPT_SANITIZE) installs instrumented static libraries: the consumer links the runtimes.
 extra=()
 grep -q '^HULLOPT_SANITIZE:BOOL=ON' "$build_dir/CMakeCache.txt" && extra=(-DCMAKE_EXE_LINKER_FLAGS=-fsanitize=address,undefined)

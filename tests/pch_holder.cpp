@@ -1,0 +1,2 @@
+// Holds the tests' precompiled header (tests/CMakeLists.txt); never run.
+int main() { return 0; }
