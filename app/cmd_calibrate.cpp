@@ -8,15 +8,16 @@
 #include <iostream>
 #include <stdexcept>
 
-#include "app/calibration_model.h"
 #include "app/commands.h"
-#include "app/output_options.h"
 #include "app/output_dir.h"
+#include "app/output_options.h"
+#include "app/run_checks.h"
+#include "calibration/calibrate_config.h"
+#include "calibration/calibration_model.h"
+#include "calibration/calibration_output.h"
+#include "calibration/calibration_plot.h"
 #include "evaluation/validity_envelope.h"
 #include "io/formats/atomic_file.h"
-#include "io/config/calibrate_config.h"
-#include "io/config/calibration_output.h"
-#include "io/report/calibration_plot.h"
 #include "io/formats/input_error.h"
 #include "io/formats/tank_rao_reader.h"
 
@@ -46,7 +47,7 @@ std::string FileLabel(const std::string& label) {
 
 void RunCalibrate(const std::string& config_file, const std::string& out_dir) {
   io::YamlMap root = io::YamlMap::LoadFile(config_file);
-  const io::CalibrateConfig cfg = io::ReadCalibrateConfig(root);
+  const calib::CalibrateConfig cfg = calib::ReadCalibrateConfig(root);
 
   // Cases: hull by hull, speed by speed.
   std::vector<opt::CalibrationCase> cases;
@@ -62,19 +63,20 @@ void RunCalibrate(const std::string& config_file, const std::string& out_dir) {
     cases.insert(cases.end(), hc.begin(), hc.end());
   }
   std::string error;
-  if (!opt::CheckCalibrationData(cases, cfg.options, &error)) {
+  if (!calib::CheckCalibrationData(cases, cfg.options, &error)) {
     throw io::InputError(config_file + ": calibrate data (" + files + "): " + error);
   }
   std::vector<std::string> validity;
-  const opt::CsRaoModel model = MakeCalibrationModel(root, cfg, cases, &validity);
+  const calib::CsRaoModel model = calib::MakeCalibrationModel(
+      root, cfg, cases, &validity, [](const io::StripWork& work) { CheckRunCost("calibrate", work); });
   root.Finish();
 
   // Ceres logs failed model evaluations through glog to stderr; CalibrateCs reports them in its warnings or
   // its exception instead, so keep the terminal to the one-line error rule.
   FLAGS_minloglevel = google::GLOG_FATAL;
-  opt::CsCalibrationResult r;
+  calib::CsCalibrationResult r;
   try {
-    r = opt::CalibrateCs(model, cases, cfg.options);
+    r = calib::CalibrateCs(model, cases, cfg.options);
   } catch (const std::invalid_argument& e) {
     throw io::InputError(config_file + ": " + e.what());
   } catch (const std::domain_error& e) {
@@ -86,7 +88,7 @@ void RunCalibrate(const std::string& config_file, const std::string& out_dir) {
   // envelope's range, or with a standard error larger than its value, is reported as not converged and gets no
   // calibrated_solver*.yaml.
   for (std::size_t c = 0; c < r.case_Cs.size(); ++c) {
-    const std::string label = cases.size() > 1 && r.mode != opt::CsFitMode::kSingle ? " of case '" + cases[c].label + "'" : "";
+    const std::string label = cases.size() > 1 && r.mode != calib::CsFitMode::kSingle ? " of case '" + cases[c].label + "'" : "";
     for (const auto& f : eval::CheckEnvelopeValue(eval::EnvelopeQuantity::kDampingCs, r.case_Cs[c], "Cs")) {
       r.converged = false;
       r.warnings.push_back("fitted " + f.message + label + ": the fit is not converged to a physical Cs");
@@ -98,26 +100,26 @@ void RunCalibrate(const std::string& config_file, const std::string& out_dir) {
                     r.case_Cs_std_error[c]);
       r.warnings.push_back("fitted Cs" + label + buf + ": the data do not determine it; the fit is not converged");
     }
-    if (r.mode == opt::CsFitMode::kSingle) break;
+    if (r.mode == calib::CsFitMode::kSingle) break;
   }
   if (!r.converged)
     r.warnings.push_back("the fit did not converge to a determined, physical Cs: no calibrated_solver*.yaml is "
                          "written (see calibration_report.txt)");
   PrepareOutputDir(out_dir, "calibrate", config_file, root.resolved());
-  Write(OutPath(out_dir, "calibration.json"), io::CalibrationJson(cfg, cases, r));
+  Write(OutPath(out_dir, "calibration.json"), calib::CalibrationJson(cfg, cases, r));
   Write(OutPath(out_dir, "calibration_report.txt"), r.FullReport());
-  io::WriteSvg(io::CalibrationPlot(cases, r, cfg.options.Cs_initial),
+  io::WriteSvg(calib::CalibrationPlot(cases, r, cfg.options.Cs_initial),
                OutPath(out_dir, "calibration_plot.svg"));
   std::vector<std::string> snippets;
   if (!r.converged) {
     // nothing to paste
-  } else if (r.mode == opt::CsFitMode::kSingle) {
+  } else if (r.mode == calib::CsFitMode::kSingle) {
     snippets.push_back("calibrated_solver.yaml");
-    Write(OutPath(out_dir, snippets.back()), io::CalibratedSolverYaml(cfg, cases, r, 0));
+    Write(OutPath(out_dir, snippets.back()), calib::CalibratedSolverYaml(cfg, cases, r, 0));
   } else {
     for (int c = 0; c < static_cast<int>(cases.size()); ++c) {
       snippets.push_back("calibrated_solver_" + FileLabel(cases[c].label) + ".yaml");
-      Write(OutPath(out_dir, snippets.back()), io::CalibratedSolverYaml(cfg, cases, r, c));
+      Write(OutPath(out_dir, snippets.back()), calib::CalibratedSolverYaml(cfg, cases, r, c));
     }
   }
 

@@ -8,8 +8,8 @@
 #include <thread>
 
 #include "io/formats/tank_rao_reader.h"
-#include "optimizer/cs_calibration.h"
-#include "optimizer/synthetic_oscillator_rao.h"
+#include "calibration/fit/cs_calibration.h"
+#include "calibration/fit/synthetic_oscillator_rao.h"
 
 using namespace hullopt;
 
@@ -20,8 +20,8 @@ std::vector<opt::CalibrationCase> DelftCases() {
   return io::GroupTankRaoBySpeed(pts, {0.75}, "", 0.0);
 }
 
-opt::SyntheticOscillatorOptions DelftLike() {
-  opt::SyntheticOscillatorOptions o;
+calib::SyntheticOscillatorOptions DelftLike() {
+  calib::SyntheticOscillatorOptions o;
   o.heave_natural_rad_s = 8.1;
   o.pitch_natural_rad_s = 8.4;
   o.pitch_zeta0 = 0.2;
@@ -31,12 +31,12 @@ opt::SyntheticOscillatorOptions DelftLike() {
 
 void BM_CalibrateOneHullOneSpeed(benchmark::State& state) {
   const auto cases = DelftCases();
-  const auto model = opt::MakeSyntheticOscillatorModel(DelftLike(), cases);
-  opt::CsCalibrationOptions o;
+  const auto model = calib::MakeSyntheticOscillatorModel(DelftLike(), cases);
+  calib::CsCalibrationOptions o;
   o.Cs_initial = 0.024;
   int evaluations = 0;
   for (auto _ : state) {
-    const auto r = opt::CalibrateCs(model, cases, o);
+    const auto r = calib::CalibrateCs(model, cases, o);
     evaluations = r.model_evaluations;
     benchmark::DoNotOptimize(r.parameters[0]);
   }
@@ -48,14 +48,14 @@ BENCHMARK(BM_CalibrateOneHullOneSpeed)->Unit(benchmark::kMillisecond);
 // measured frequencies; the kernels are precomputed outside the fit): wall ≈ evaluations × 10 ms + overhead.
 void BM_CalibrateWith10msModel(benchmark::State& state) {
   const auto cases = DelftCases();
-  const auto fast = opt::MakeSyntheticOscillatorModel(DelftLike(), cases);
-  const opt::CsRaoModel slow = [fast](double Cs, int c) {
+  const auto fast = calib::MakeSyntheticOscillatorModel(DelftLike(), cases);
+  const calib::CsRaoModel slow = [fast](double Cs, int c) {
     std::this_thread::sleep_for(std::chrono::milliseconds(10));
     return fast(Cs, c);
   };
-  opt::CsCalibrationOptions o;
+  calib::CsCalibrationOptions o;
   o.Cs_initial = 0.024;
-  for (auto _ : state) benchmark::DoNotOptimize(opt::CalibrateCs(slow, cases, o).parameters[0]);
+  for (auto _ : state) benchmark::DoNotOptimize(calib::CalibrateCs(slow, cases, o).parameters[0]);
 }
 BENCHMARK(BM_CalibrateWith10msModel)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(3);
 }  // namespace

@@ -3,7 +3,7 @@
 #include <optional>
 
 #include "fuzz_input.h"
-#include "io/config/calibrate_config.h"
+#include "calibration/calibrate_config.h"
 #include "io/config/campaign_config.h"
 #include "io/config/hull_config.h"
 #include "io/formats/input_error.h"
@@ -30,6 +30,7 @@ void Try(const std::string& path, F f) {
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   namespace io = hullopt::io;
+  namespace calib = hullopt::calib;
   const std::string path = hullopt::fuzz::WriteScratch(data, size, ".yaml");
   Try(path, [](YamlMap& r) {
     const io::WaterOptions w = io::ParseWater(r);
@@ -45,7 +46,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     io::ReadMsiOptions(r);
   });
   Try(path, [](YamlMap& r) { io::ReadSectionConfig(r); });
-  Try(path, [](YamlMap& r) { io::ReadCalibrateConfig(r); });
+  Try(path, [](YamlMap& r) { calib::ReadCalibrateConfig(r); });
   for (auto command : {io::CampaignCommand::kOptimize, io::CampaignCommand::kExplore}) {
     Try(path, [&](YamlMap& r) {
       std::optional<YamlMap> block;

@@ -5,11 +5,12 @@
 #include <filesystem>
 #include <fstream>
 
-#include "io/config/calibrate_config.h"
+#include "calibration/calibrate_config.h"
 
-using hullopt::io::ReadCalibrateConfig;
+using hullopt::calib::ReadCalibrateConfig;
 using hullopt::io::YamlMap;
 using namespace hullopt::opt;
+using namespace hullopt::calib;
 
 namespace {
 // The data files a.csv and b.csv exist beside the config (their paths are checked when read, not their content).

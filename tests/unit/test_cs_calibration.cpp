@@ -6,10 +6,11 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 
-#include "optimizer/cs_calibration.h"
-#include "optimizer/synthetic_oscillator_rao.h"
+#include "calibration/fit/cs_calibration.h"
+#include "calibration/fit/synthetic_oscillator_rao.h"
 
 using namespace hullopt::opt;
+using namespace hullopt::calib;
 
 namespace {
 // Ceres stops on relative cost change 1e-10 / step 1e-10 and differentiates numerically (central, relative

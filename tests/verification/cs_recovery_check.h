@@ -6,7 +6,7 @@
 #include <random>
 #include <vector>
 
-#include "optimizer/cs_calibration.h"
+#include "calibration/fit/cs_calibration.h"
 
 namespace hullopt::testing {
 
@@ -36,17 +36,17 @@ inline CsRecoveryStats Summarise(const CsRecoveryStats& s, int seeds, double Cs_
 }
 
 /// `templ` gives the cases (frequencies, speeds); its measured values are replaced. Seeds are 1..seeds.
-inline CsRecoveryStats RunCsRecovery(const opt::CsRaoModel& model,
+inline CsRecoveryStats RunCsRecovery(const calib::CsRaoModel& model,
                                      const std::vector<opt::CalibrationCase>& templ, double Cs_true,
                                      double relative_noise, int seeds,
-                                     const opt::CsCalibrationOptions& options) {
+                                     const calib::CsCalibrationOptions& options) {
   CsRecoveryStats s;
   for (int seed = 1; seed <= seeds; ++seed) {
     std::mt19937 rng(static_cast<unsigned>(seed));
     std::normal_distribution<double> eps(0.0, 1.0);
     std::vector<opt::CalibrationCase> cases = templ;
     for (int c = 0; c < static_cast<int>(cases.size()); ++c) {
-      const opt::RaoPrediction truth = model(Cs_true, c);
+      const calib::RaoPrediction truth = model(Cs_true, c);
       for (std::size_t i = 0; i < cases[c].points.size(); ++i) {
         auto& p = cases[c].points[i];
         p.heave_amp = std::abs(truth.heave[i]) * (1.0 + relative_noise * eps(rng));
@@ -54,7 +54,7 @@ inline CsRecoveryStats RunCsRecovery(const opt::CsRaoModel& model,
         p.has_heave_phase = p.has_pitch_phase = false;
       }
     }
-    const opt::CsCalibrationResult r = opt::CalibrateCs(model, cases, options);
+    const calib::CsCalibrationResult r = calib::CalibrateCs(model, cases, options);
     s.fitted.push_back(r.parameters[0]);
     s.std_errors.push_back(r.parameter_std_errors[0]);
   }

@@ -2,14 +2,14 @@
 // within two standard errors, and the reported standard error agrees with the scatter over 20 noise seeds.
 // Models: hullopt's own time-domain strip solver on the Delft 372 catamaran (the specified case: kernels
 // built once, each model call a 2x2 periodic solve per frequency), and the synthetic damped oscillator
-// (optimizer/synthetic_oscillator_rao.h), which isolates the fit from the ship physics. The body
+// (calibration/fit/synthetic_oscillator_rao.h), which isolates the fit from the ship physics. The body
 // (verification/cs_recovery_check.h) takes any CsRaoModel.
 #include <catch2/catch.hpp>
 
 #include <cmath>
 #include <memory>
 
-#include "optimizer/synthetic_oscillator_rao.h"
+#include "calibration/fit/synthetic_oscillator_rao.h"
 #include "optimizer/tank_rao_frequency.h"
 #include "seakeeping/motions/head_sea_ship_model.h"
 #include "seakeeping/motions/periodic_motion_solver.h"
@@ -47,7 +47,7 @@ std::vector<opt::CalibrationCase> Cases() {
 namespace {
 // hullopt's strip solver on the Delft 372 catamaran as a Cs model: the paper's 40 sections x 14 panels, both
 // demihulls in the strips, the kernel built once (it does not depend on Cs).
-opt::CsRaoModel Delft372StripModel(const std::vector<opt::CalibrationCase>& cases) {
+calib::CsRaoModel Delft372StripModel(const std::vector<opt::CalibrationCase>& cases) {
   constexpr double kG = 9.81, kRho = 1000.0, kL = 3.0;  // fresh-water tank, L_wl of the model
   const auto hull = testing::Delft372Hull(HULLOPT_SOURCE_DIR);
   const auto mass = testing::Delft372Mass();
@@ -61,14 +61,14 @@ opt::CsRaoModel Delft372StripModel(const std::vector<opt::CalibrationCase>& case
     sk::MotionOptions m = o.motion;
     m.damping_cs = Cs;
     const sk::RaoTable r = sk::SolvePeriodicRaos(sk::HeadSeaShipModel(*kernel, mass, m), grid.omega_rad_s);
-    opt::RaoPrediction p;
+    calib::RaoPrediction p;
     for (int i : grid.index_of_point) p.heave.push_back(r.heave.at(i)), p.pitch.push_back(r.pitch.at(i));
     return p;
   };
 }
-opt::CsCalibrationOptions RelativeFit() {
-  opt::CsCalibrationOptions co;
-  co.residual_scale = opt::CsResidualScale::kRelative;  // multiplicative noise: see the synthetic case below
+calib::CsCalibrationOptions RelativeFit() {
+  calib::CsCalibrationOptions co;
+  co.residual_scale = calib::CsResidualScale::kRelative;  // multiplicative noise: see the synthetic case below
   co.Cs_initial = 0.02;
   return co;
 }
@@ -105,11 +105,11 @@ TEST_CASE("strip solver: Delft 372 data made at Cs = 0.05 with 3% noise are fitt
 
 TEST_CASE("synthetic recovery of Cs = 0.05 with 3% noise (relative residuals)", "[calibration][recovery]") {
   const auto cases = Cases();
-  const auto model = opt::MakeSyntheticOscillatorModel({}, cases);
-  opt::CsCalibrationOptions o;
+  const auto model = calib::MakeSyntheticOscillatorModel({}, cases);
+  calib::CsCalibrationOptions o;
   // 3% multiplicative noise has a standard deviation proportional to the RAO: relative residuals make it
   // homoscedastic, which the scaled-covariance standard error assumes.
-  o.residual_scale = opt::CsResidualScale::kRelative;
+  o.residual_scale = calib::CsResidualScale::kRelative;
   o.Cs_initial = 0.02;
   const auto s = testing::RunCsRecovery(model, cases, kCsTrue, kNoise, kSeeds, o);
   INFO("seed 1: Cs = " << s.fitted[0] << " ± " << s.std_errors[0] << "; scatter sd " << s.scatter_sd
@@ -132,8 +132,8 @@ TEST_CASE("synthetic recovery of Cs = 0.05 with 3% noise (relative residuals)", 
 TEST_CASE("absolute residuals with multiplicative noise: recovered, std error reported for information",
           "[calibration][recovery]") {
   const auto cases = Cases();
-  const auto model = opt::MakeSyntheticOscillatorModel({}, cases);
-  opt::CsCalibrationOptions o;
+  const auto model = calib::MakeSyntheticOscillatorModel({}, cases);
+  calib::CsCalibrationOptions o;
   o.Cs_initial = 0.02;
   const auto s = testing::RunCsRecovery(model, cases, kCsTrue, kNoise, kSeeds, o);
   CHECK(std::fabs(s.fitted[0] - kCsTrue) <= 2.0 * s.std_errors[0]);

@@ -1,4 +1,4 @@
-#include "optimizer/cs_calibration.h"
+#include "calibration/fit/cs_calibration.h"
 
 #include <ceres/ceres.h>
 
@@ -12,7 +12,7 @@
 #include <sstream>
 #include <stdexcept>
 
-namespace hullopt::opt {
+namespace hullopt::calib {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
@@ -32,10 +32,10 @@ struct Slot {
   Kind kind;
 };
 
-std::vector<Slot> Layout(const CalibrationCase& c, const CsCalibrationOptions& o) {
+std::vector<Slot> Layout(const opt::CalibrationCase& c, const CsCalibrationOptions& o) {
   std::vector<Slot> slots;
   for (int i = 0; i < static_cast<int>(c.points.size()); ++i) {
-    const TankRaoPoint& p = c.points[i];
+    const opt::TankRaoPoint& p = c.points[i];
     if (o.heave_weight > 0) slots.push_back({i, kHeave});
     if (o.pitch_weight > 0) slots.push_back({i, kPitch});
     if (o.use_phases && o.heave_weight > 0 && p.has_heave_phase) slots.push_back({i, kHeavePhase});
@@ -46,7 +46,7 @@ std::vector<Slot> Layout(const CalibrationCase& c, const CsCalibrationOptions& o
 
 double WrapPi(double a) { return std::remainder(a, 2.0 * kPi); }
 
-double Measured(const TankRaoPoint& p, Kind k) {
+double Measured(const opt::TankRaoPoint& p, Kind k) {
   switch (k) {
     case kHeave:
       return p.heave_amp;
@@ -67,9 +67,9 @@ double Computed(const RaoPrediction& r, const Slot& s) {
   return std::arg(x) * 180.0 / kPi;
 }
 
-double SlotResidual(const CalibrationCase& c, const RaoPrediction& r, const Slot& s,
+double SlotResidual(const opt::CalibrationCase& c, const RaoPrediction& r, const Slot& s,
                     const CsCalibrationOptions& o) {
-  const TankRaoPoint& p = c.points[s.point];
+  const opt::TankRaoPoint& p = c.points[s.point];
   const bool heave = (s.kind == kHeave || s.kind == kHeavePhase);
   const double w = heave ? o.heave_weight : o.pitch_weight;
   const double meas_amp = heave ? p.heave_amp : p.pitch_amp;
@@ -177,7 +177,7 @@ class PredictionCache {
 template <int N>
 struct SlotCost {
   PredictionCache* cache;
-  const CalibrationCase* c;
+  const opt::CalibrationCase* c;
   Slot slot;
   CsCalibrationOptions options;
 
@@ -247,7 +247,7 @@ bool CsCalibrationOptions::IsValid(std::string* error) const {
   return true;
 }
 
-bool CheckCalibrationData(const std::vector<CalibrationCase>& cases, const CsCalibrationOptions& o,
+bool CheckCalibrationData(const std::vector<opt::CalibrationCase>& cases, const CsCalibrationOptions& o,
                           std::string* error) {
   auto fail = [&](const std::string& msg) {
     if (error) *error = msg;
@@ -257,9 +257,9 @@ bool CheckCalibrationData(const std::vector<CalibrationCase>& cases, const CsCal
   int n = 0;
   bool any_phase = false;
   std::set<double> params;
-  for (const CalibrationCase& c : cases) {
+  for (const opt::CalibrationCase& c : cases) {
     if (c.points.empty()) return fail("case '" + c.label + "' has no measured points");
-    for (const TankRaoPoint& p : c.points) {
+    for (const opt::TankRaoPoint& p : c.points) {
       any_phase = any_phase || p.has_heave_phase || p.has_pitch_phase;
       if (o.residual_scale == CsResidualScale::kRelative) {
         if (o.heave_weight > 0 && !(p.heave_amp > 0))
@@ -300,7 +300,7 @@ bool CheckCalibrationData(const std::vector<CalibrationCase>& cases, const CsCal
   return true;
 }
 
-CsCalibrationResult CalibrateCs(const CsRaoModel& model, const std::vector<CalibrationCase>& cases,
+CsCalibrationResult CalibrateCs(const CsRaoModel& model, const std::vector<opt::CalibrationCase>& cases,
                                 const CsCalibrationOptions& o) {
   const auto t0 = std::chrono::steady_clock::now();
   std::string error;
@@ -449,7 +449,7 @@ CsCalibrationResult CalibrateCs(const CsRaoModel& model, const std::vector<Calib
   // Per-case Cs, before/after residuals and peaks.
   double ss_before = 0, ss_after = 0;
   for (int c = 0; c < num_cases; ++c) {
-    const CalibrationCase& cc = cases[c];
+    const opt::CalibrationCase& cc = cases[c];
     const double* x = block_of(c);
     const double Cs = CaseCs(x, block_size, cc.hull_parameter);
     res.case_Cs.push_back(Cs);
@@ -522,9 +522,9 @@ CsCalibrationResult CalibrateCs(const CsRaoModel& model, const std::vector<Calib
       pk.case_index = c;
       pk.quantity = q == 0 ? "heave" : "pitch";
       pk.abscissa = all_w ? "omega_e_rad_s" : "lambda_over_L";
-      pk.measured = InterpolatedPeak(xs, ym);
-      pk.before = InterpolatedPeak(xs, yb);
-      pk.after = InterpolatedPeak(xs, ya);
+      pk.measured = opt::InterpolatedPeak(xs, ym);
+      pk.before = opt::InterpolatedPeak(xs, yb);
+      pk.after = opt::InterpolatedPeak(xs, ya);
       if (!(pk.measured.value > 0)) {  // no relative peak error against an all-zero measurement
         res.warnings.push_back("case '" + cc.label + "': every measured " + pk.quantity +
                                " RAO is 0, no peak comparison");
@@ -609,4 +609,4 @@ std::string CsCalibrationResult::FullReport() const {
   return s.str();
 }
 
-}  // namespace hullopt::opt
+}  // namespace hullopt::calib

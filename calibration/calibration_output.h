@@ -5,19 +5,19 @@
 #include <string>
 #include <vector>
 
-#include "io/config/calibrate_config.h"
-#include "optimizer/cs_calibration.h"
+#include "calibration/calibrate_config.h"
+#include "calibration/fit/cs_calibration.h"
 
-namespace hullopt::io {
+namespace hullopt::calib {
 
 /// calibration.json text. `Cs` and `Cs_std_error` are numbers in mode single and lists (one per case, in the
 /// order of `cases`) in the other modes.
 std::string CalibrationJson(const CalibrateConfig& config, const std::vector<opt::CalibrationCase>& cases,
-                            const opt::CsCalibrationResult& r);
+                            const CsCalibrationResult& r);
 
 /// Hull-config snippet `solver: { Cs: ... }` for case `case_index`, with comments naming the fit.
 std::string CalibratedSolverYaml(const CalibrateConfig& config,
                                  const std::vector<opt::CalibrationCase>& cases,
-                                 const opt::CsCalibrationResult& r, int case_index);
+                                 const CsCalibrationResult& r, int case_index);
 
-}  // namespace hullopt::io
+}  // namespace hullopt::calib

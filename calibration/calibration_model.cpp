@@ -1,21 +1,21 @@
-#include "app/calibration_model.h"
+#include "calibration/calibration_model.h"
 
 #include <algorithm>
 
-#include "app/run_checks.h"
-#include "evaluation/calibration_model.h"
+#include "calibration/model/strip_rao_model.h"
 #include "io/config/design_config.h"
 #include "io/formats/input_error.h"
-#include "optimizer/synthetic_oscillator_rao.h"
+#include "calibration/fit/synthetic_oscillator_rao.h"
 
-namespace hullopt::app {
+namespace hullopt::calib {
 
-opt::CsRaoModel MakeCalibrationModel(io::YamlMap& root, const io::CalibrateConfig& config,
+CsRaoModel MakeCalibrationModel(io::YamlMap& root, const CalibrateConfig& config,
                                      const std::vector<opt::CalibrationCase>& cases,
-                                     std::vector<std::string>* warnings) {
-  std::vector<eval::CsModelPart> parts;
+                                     std::vector<std::string>* warnings,
+                                     const std::function<void(const io::StripWork&)>& check_cost) {
+  std::vector<CsModelPart> parts;
   for (const auto& hull : config.hulls) {
-    eval::CsModelPart part;
+    CsModelPart part;
     std::vector<opt::CalibrationCase> mine;
     for (int c = 0; c < static_cast<int>(cases.size()); ++c) {
       if (cases[c].hull != hull.name) continue;
@@ -23,7 +23,7 @@ opt::CsRaoModel MakeCalibrationModel(io::YamlMap& root, const io::CalibrateConfi
       mine.push_back(cases[c]);
     }
     if (hull.synthetic) {
-      part.model = opt::MakeSyntheticOscillatorModel(*hull.synthetic, mine);
+      part.model = MakeSyntheticOscillatorModel(*hull.synthetic, mine);
     } else {
       if (!hull.name.empty())
         throw io::InputError(root.file() + ": calibrate.hulls['" + hull.name +
@@ -45,12 +45,12 @@ opt::CsRaoModel MakeCalibrationModel(io::YamlMap& root, const io::CalibrateConfi
       work.sweeps_per_kernel = 300;
       work.count_key = work.parallel_key = "calibrate.speeds_Fn";
       // Strip theory has no kernel to reuse and is refused by the model below: no estimate for it.
-      if (base.solver.rao.method == sk::RaoSolverOptions::Method::kTimeDomainStrip) CheckRunCost("calibrate", work);
-      part.model = eval::StripSolverCsModel(base, mine, warnings);
+      if (base.solver.rao.method == sk::RaoSolverOptions::Method::kTimeDomainStrip && check_cost) check_cost(work);
+      part.model = StripSolverCsModel(base, mine, warnings);
     }
     parts.push_back(std::move(part));
   }
-  return eval::CombineCsModels(std::move(parts));
+  return CombineCsModels(std::move(parts));
 }
 
-}  // namespace hullopt::app
+}  // namespace hullopt::calib

@@ -27,9 +27,9 @@
 #include "optimizer/rao_peak.h"
 #include "optimizer/tank_rao_data.h"
 
-namespace hullopt::opt {
+namespace hullopt::calib {
 
-/// Computed complex RAOs of one case at its measured points, in the order of CalibrationCase::points.
+/// Computed complex RAOs of one case at its measured points, in the order of opt::CalibrationCase::points.
 struct RaoPrediction {
   std::vector<std::complex<double>> heave;  ///< X3/A [m/m]
   std::vector<std::complex<double>> pitch;  ///< X5/(kA) [-]
@@ -44,7 +44,7 @@ using CsRaoModel = std::function<RaoPrediction(double Cs, int case_index)>;
 enum class CsFitMode {
   kSingle,             ///< one Cs for every case
   kPerCase,            ///< one Cs per case (hull × speed); `per_speed` in the config
-  kLinearInParameter,  ///< Cs = a + b·p with p = CalibrationCase::hull_parameter, across several hulls
+  kLinearInParameter,  ///< Cs = a + b·p with p = opt::CalibrationCase::hull_parameter, across several hulls
 };
 enum class CsResidualScale { kAbsolute, kRelative };
 enum class CsRobustLoss { kNone, kHuber, kCauchy };
@@ -72,13 +72,13 @@ struct CsCalibrationOptions {
 /// measured RAOs, use_phases finds at least one phase, n residuals > p parameters (per case in mode
 /// kPerCase), and mode kLinearInParameter has at least two distinct hull parameters. False with a reason
 /// naming case and counts.
-bool CheckCalibrationData(const std::vector<CalibrationCase>& cases, const CsCalibrationOptions& options,
+bool CheckCalibrationData(const std::vector<opt::CalibrationCase>& cases, const CsCalibrationOptions& options,
                           std::string* error);
 
 /// One residual of the fit.
 struct CsPointResidual {
   int case_index = 0;
-  int point_index = 0;           ///< index into CalibrationCase::points
+  int point_index = 0;           ///< index into opt::CalibrationCase::points
   std::string quantity;          ///< "heave", "pitch", "heave_phase" or "pitch_phase"
   std::string source;            ///< "file:line" of the measured row
   double measured = 0.0;         ///< |X| measured, or the phase [deg]
@@ -94,7 +94,7 @@ struct CsPeakChange {
   int case_index = 0;
   std::string quantity;  ///< "heave" or "pitch"
   std::string abscissa;  ///< "omega_e_rad_s" or "lambda_over_L": the x of the peaks
-  RaoPeak measured, before, after;
+  opt::RaoPeak measured, before, after;
   double RelativeErrorBefore() const { return (before.value - measured.value) / measured.value; }
   double RelativeErrorAfter() const { return (after.value - measured.value) / measured.value; }
 };
@@ -141,7 +141,7 @@ struct CsCalibrationResult {
 /// Fits Cs. Throws std::invalid_argument when options are invalid or CheckCalibrationData fails, and
 /// std::domain_error when the model returns the wrong number of points or a non-finite RAO at the start
 /// value.
-CsCalibrationResult CalibrateCs(const CsRaoModel& model, const std::vector<CalibrationCase>& cases,
+CsCalibrationResult CalibrateCs(const CsRaoModel& model, const std::vector<opt::CalibrationCase>& cases,
                                 const CsCalibrationOptions& options);
 
 /// Names used in configs and reports: "single", "per_speed", "linear_in_parameter"; "absolute", "relative";
@@ -150,4 +150,4 @@ std::string ToString(CsFitMode mode);
 std::string ToString(CsResidualScale scale);
 std::string ToString(CsRobustLoss loss);
 
-}  // namespace hullopt::opt
+}  // namespace hullopt::calib

@@ -8,9 +8,9 @@
 #include <string>
 #include <vector>
 
-#include "optimizer/cs_calibration.h"
+#include "calibration/fit/cs_calibration.h"
 
-namespace hullopt::opt {
+namespace hullopt::calib {
 
 struct SyntheticOscillatorOptions {
   double heave_natural_rad_s = 8.0;  ///< [rad/s] ω_n of heave (in encounter frequency)
@@ -27,6 +27,6 @@ struct SyntheticOscillatorOptions {
 
 /// The model for the given cases (copied). Throws std::invalid_argument for invalid options.
 CsRaoModel MakeSyntheticOscillatorModel(const SyntheticOscillatorOptions& options,
-                                        const std::vector<CalibrationCase>& cases);
+                                        const std::vector<opt::CalibrationCase>& cases);
 
-}  // namespace hullopt::opt
+}  // namespace hullopt::calib

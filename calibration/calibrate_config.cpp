@@ -1,26 +1,26 @@
-#include "io/config/calibrate_config.h"
+#include "calibration/calibrate_config.h"
 
 #include "io/config/config_path.h"
 #include "io/config/water_config.h"
 
-namespace hullopt::io {
+namespace hullopt::calib {
 namespace {
 
-std::vector<std::string> DataFiles(YamlMap& m) {
+std::vector<std::string> DataFiles(io::YamlMap& m) {
   std::vector<std::string> files = ConfigFilePaths(m, "data");
   if (files.empty()) m.Fail("data", "must list at least one tank RAO CSV file");
   return files;
 }
 
-std::optional<opt::SyntheticOscillatorOptions> Model(YamlMap& m) {
+std::optional<SyntheticOscillatorOptions> Model(io::YamlMap& m) {
   if (!m.Has("model")) {
     m.Skip("model");
     return std::nullopt;
   }
-  YamlMap model = m.Map("model");
-  YamlMap s = model.Map("synthetic_oscillator");
+  io::YamlMap model = m.Map("model");
+  io::YamlMap s = model.Map("synthetic_oscillator");
   model.Finish();
-  opt::SyntheticOscillatorOptions o;
+  SyntheticOscillatorOptions o;
   o.heave_natural_rad_s = s.Number("heave_natural_rad_s", o.heave_natural_rad_s);
   o.pitch_natural_rad_s = s.Number("pitch_natural_rad_s", o.pitch_natural_rad_s);
   o.heave_zeta0 = s.Number("heave_zeta0", o.heave_zeta0);
@@ -37,9 +37,9 @@ std::optional<opt::SyntheticOscillatorOptions> Model(YamlMap& m) {
 
 }  // namespace
 
-CalibrateConfig ReadCalibrateConfig(YamlMap& root) {
+CalibrateConfig ReadCalibrateConfig(io::YamlMap& root) {
   CalibrateConfig cfg;
-  YamlMap cal = root.Map("calibrate");
+  io::YamlMap cal = root.Map("calibrate");
 
   // Speeds.
   if (cal.Has("speeds_Fn")) {
@@ -48,7 +48,7 @@ CalibrateConfig ReadCalibrateConfig(YamlMap& root) {
     if (root.Has("speed")) cal.Fail("speeds_Fn", "give the speeds either here or in 'speed', not both");
   } else {
     cal.Skip("speeds_Fn");
-    YamlMap speed = root.Map("speed");
+    io::YamlMap speed = root.Map("speed");
     if (!speed.Has("Fn")) {
       speed.Fail(speed.Has("kn")    ? "kn"
                  : speed.Has("m_s") ? "m_s"
@@ -62,12 +62,12 @@ CalibrateConfig ReadCalibrateConfig(YamlMap& root) {
     if (!(fn > 0)) cal.Fail(cal.Has("speeds_Fn") ? "speeds_Fn" : "calibrate", "Froude numbers must be > 0");
 
   // Options.
-  opt::CsCalibrationOptions& o = cfg.options;
+  CsCalibrationOptions& o = cfg.options;
   const std::string mode = cal.Choice("mode", {"single", "per_speed", "linear_in_parameter"}, "single");
-  o.mode = mode == "single"      ? opt::CsFitMode::kSingle
-           : mode == "per_speed" ? opt::CsFitMode::kPerCase
-                                 : opt::CsFitMode::kLinearInParameter;
-  YamlMap w = cal.MapOrEmpty("weights");
+  o.mode = mode == "single"      ? CsFitMode::kSingle
+           : mode == "per_speed" ? CsFitMode::kPerCase
+                                 : CsFitMode::kLinearInParameter;
+  io::YamlMap w = cal.MapOrEmpty("weights");
   o.heave_weight = w.Number("heave", 1.0);
   o.pitch_weight = w.Number("pitch", 1.0);
   if (o.heave_weight < 0) w.Fail("heave", "must be >= 0 (0 leaves heave out of the fit)");
@@ -76,13 +76,13 @@ CalibrateConfig ReadCalibrateConfig(YamlMap& root) {
     w.Fail("heave", "heave and pitch weights are both 0: nothing to fit");
   w.Finish();
   o.residual_scale = cal.Choice("residual", {"absolute", "relative"}, "absolute") == "absolute"
-                         ? opt::CsResidualScale::kAbsolute
-                         : opt::CsResidualScale::kRelative;
-  YamlMap loss = cal.MapOrEmpty("loss");
+                         ? CsResidualScale::kAbsolute
+                         : CsResidualScale::kRelative;
+  io::YamlMap loss = cal.MapOrEmpty("loss");
   const std::string type = loss.Choice("type", {"none", "huber", "cauchy"}, "none");
-  o.loss = type == "none"    ? opt::CsRobustLoss::kNone
-           : type == "huber" ? opt::CsRobustLoss::kHuber
-                             : opt::CsRobustLoss::kCauchy;
+  o.loss = type == "none"    ? CsRobustLoss::kNone
+           : type == "huber" ? CsRobustLoss::kHuber
+                             : CsRobustLoss::kCauchy;
   o.loss_scale = loss.Number("scale", 1.0);
   if (!(o.loss_scale > 0))
     loss.Fail("scale", "must be > 0 (the residual size where the loss starts to down-weight)");
@@ -96,7 +96,7 @@ CalibrateConfig ReadCalibrateConfig(YamlMap& root) {
   if (o.max_iterations < 1) cal.Fail("max_iterations", "must be >= 1");
   cfg.parameter_name = cal.String("parameter_name", "p");
   std::string error;
-  if (!o.IsValid(&error)) throw InputError(cal.Where("mode") + ": " + error);
+  if (!o.IsValid(&error)) throw io::InputError(cal.Where("mode") + ": " + error);
 
   // Hulls and data.
   if (cal.Has("data") == cal.Has("hulls")) {
@@ -111,7 +111,7 @@ CalibrateConfig ReadCalibrateConfig(YamlMap& root) {
     cfg.hulls.push_back(h);
   } else {
     cal.Skip("data");
-    for (YamlMap& hm : cal.ListOfMaps("hulls")) {
+    for (io::YamlMap& hm : cal.ListOfMaps("hulls")) {
       CalibrateHull h;
       h.name = hm.String("name");
       h.parameter = hm.Number("parameter", 0.0);
@@ -125,7 +125,7 @@ CalibrateConfig ReadCalibrateConfig(YamlMap& root) {
     if (cal.Has("model")) cal.Fail("model", "with 'hulls', give the model of each hull inside its entry");
     cal.Skip("model");
   }
-  if (o.mode == opt::CsFitMode::kLinearInParameter && cfg.hulls.size() < 2) {
+  if (o.mode == CsFitMode::kLinearInParameter && cfg.hulls.size() < 2) {
     cal.Fail("mode",
              "linear_in_parameter fits Cs = a + b*p across hulls: list at least two 'hulls' with "
              "different 'parameter'");
@@ -134,4 +134,4 @@ CalibrateConfig ReadCalibrateConfig(YamlMap& root) {
   return cfg;
 }
 
-}  // namespace hullopt::io
+}  // namespace hullopt::calib

@@ -1,4 +1,4 @@
-#include "evaluation/calibration_model.h"
+#include "calibration/model/strip_rao_model.h"
 
 #include <algorithm>
 #include <cmath>
@@ -8,12 +8,12 @@
 #include "optimizer/tank_rao_frequency.h"
 #include "seakeeping/motions/validity_range.h"
 
-namespace hullopt::eval {
+namespace hullopt::calib {
 
-opt::CsRaoModel StripSolverCsModel(const DesignCase& base, const std::vector<opt::CalibrationCase>& cases,
+CsRaoModel StripSolverCsModel(const eval::DesignCase& base, const std::vector<opt::CalibrationCase>& cases,
                                    std::vector<std::string>* warnings) {
   struct Speed {
-    DesignCase design;
+    eval::DesignCase design;
     sk::StripKernel kernel;
     opt::CaseFrequencyGrid grid;
   };
@@ -22,11 +22,11 @@ opt::CsRaoModel StripSolverCsModel(const DesignCase& base, const std::vector<opt
     Speed s{base, {}, {}};
     s.design.speed_m_s = c.Fn * std::sqrt(base.water.g_m_s2 * base.hydrostatics.L_m);
     if (base.solver.steady_flow) {  // each speed's own running attitude (the base holds hull.attitude)
-      s.design.attitude = StripAttitude(base.hull, base.mass, s.design.speed_m_s, base.water, base.solver,
+      s.design.attitude = eval::StripAttitude(base.hull, base.mass, s.design.speed_m_s, base.water, base.solver,
                                         base.attitude, "calibration case '" + c.label + "'");
       s.design.running_hull = hull::ApplyRunningAttitude(base.hull, s.design.attitude);
     }
-    s.kernel = BuildDesignKernel(s.design);
+    s.kernel = eval::BuildDesignKernel(s.design);
     s.grid = opt::WaveFrequencyGrid(c, base.hydrostatics.L_m, base.water.g_m_s2);
     if (warnings && base.solver.rao.method == sk::RaoSolverOptions::Method::kTimeDomainStrip)
       for (const auto& w : sk::ValidityWarnings(s.design.speed_m_s, base.hydrostatics.L_m, base.water.g_m_s2,
@@ -36,8 +36,8 @@ opt::CsRaoModel StripSolverCsModel(const DesignCase& base, const std::vector<opt
   }
   return [speeds](double Cs, int local) {
     const Speed& s = speeds->at(local);
-    const sk::RaoTable rao = DesignRaosFromKernel(s.design, s.kernel, s.grid.omega_rad_s, Cs);
-    opt::RaoPrediction p;
+    const sk::RaoTable rao = eval::DesignRaosFromKernel(s.design, s.kernel, s.grid.omega_rad_s, Cs);
+    RaoPrediction p;
     for (int i : s.grid.index_of_point) {
       p.heave.push_back(rao.heave.at(i));
       p.pitch.push_back(rao.pitch.at(i));
@@ -46,7 +46,7 @@ opt::CsRaoModel StripSolverCsModel(const DesignCase& base, const std::vector<opt
   };
 }
 
-opt::CsRaoModel CombineCsModels(std::vector<CsModelPart> parts) {
+CsRaoModel CombineCsModels(std::vector<CsModelPart> parts) {
   int count = 0;
   for (const auto& part : parts)
     for (int c : part.cases) count = std::max(count, c + 1);
@@ -60,4 +60,4 @@ opt::CsRaoModel CombineCsModels(std::vector<CsModelPart> parts) {
   };
 }
 
-}  // namespace hullopt::eval
+}  // namespace hullopt::calib

@@ -1,11 +1,11 @@
-#include "optimizer/synthetic_oscillator_rao.h"
+#include "calibration/fit/synthetic_oscillator_rao.h"
 
 #include <cmath>
 #include <stdexcept>
 
 #include "optimizer/tank_rao_frequency.h"
 
-namespace hullopt::opt {
+namespace hullopt::calib {
 namespace {
 std::complex<double> Oscillator(double omega_e, double omega_n, double zeta) {
   const double r = omega_e / omega_n;
@@ -32,14 +32,14 @@ bool SyntheticOscillatorOptions::IsValid(std::string* error) const {
 }
 
 CsRaoModel MakeSyntheticOscillatorModel(const SyntheticOscillatorOptions& o,
-                                        const std::vector<CalibrationCase>& cases) {
+                                        const std::vector<opt::CalibrationCase>& cases) {
   std::string error;
   if (!o.IsValid(&error)) throw std::invalid_argument("synthetic oscillator model: " + error);
   // Encounter frequencies once per case (the analogue of the Cs-independent strip kernels).
   std::vector<std::vector<double>> omega_e(cases.size());
   for (std::size_t c = 0; c < cases.size(); ++c)
     for (const auto& p : cases[c].points)
-      omega_e[c].push_back(PointEncounterFrequency(p, o.length_m, o.g_m_s2));
+      omega_e[c].push_back(opt::PointEncounterFrequency(p, o.length_m, o.g_m_s2));
   return [o, omega_e](double Cs, int case_index) {
     RaoPrediction r;
     for (double w : omega_e.at(case_index)) {
@@ -50,4 +50,4 @@ CsRaoModel MakeSyntheticOscillatorModel(const SyntheticOscillatorOptions& o,
   };
 }
 
-}  // namespace hullopt::opt
+}  // namespace hullopt::calib

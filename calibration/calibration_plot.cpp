@@ -1,4 +1,4 @@
-#include "io/report/calibration_plot.h"
+#include "calibration/calibration_plot.h"
 
 #include <algorithm>
 #include <cstdio>
@@ -6,7 +6,7 @@
 
 #include "io/report/rao_axis_labels.h"
 
-namespace hullopt::io {
+namespace hullopt::calib {
 namespace {
 
 const char* kColours[] = {"#1f77b4", "#d62728", "#2ca02c", "#9467bd", "#ff7f0e", "#8c564b"};
@@ -19,24 +19,24 @@ std::string F(double v) {
 
 }  // namespace
 
-PlotFigure CalibrationPlot(const std::vector<opt::CalibrationCase>& cases, const opt::CsCalibrationResult& r,
+io::PlotFigure CalibrationPlot(const std::vector<opt::CalibrationCase>& cases, const CsCalibrationResult& r,
                            double Cs_initial) {
   bool all_l = true;
   for (const auto& c : cases)
     for (const auto& p : c.points) all_l = all_l && p.has_lambda_over_L;
   auto xof = [&](const opt::TankRaoPoint& p) { return all_l ? p.lambda_over_L : p.omega_e_rad_s; };
 
-  PlotFigure fig;
-  fig.title = "Cs calibration (" + opt::ToString(r.mode) + "): measured vs computed RAOs";
+  io::PlotFigure fig;
+  fig.title = "Cs calibration (" + ToString(r.mode) + "): measured vs computed RAOs";
   fig.footnote = "Head seas, k = ω²/g. Circles: measured. Dashed: Cs_initial = " + F(Cs_initial) +
                  ". Solid: fitted Cs. Computed at the measured points.";
   fig.columns = 2;
   const std::string xlabel = all_l ? "λ/L [-]" : "ω_e [rad/s]";
   for (int q = 0; q < 2; ++q) {
-    PlotPanel& panel =
-        fig.AddPanel(q == 0 ? "heave" : "pitch", xlabel, q == 0 ? kHeaveRaoLabel : kPitchRaoLabel);
+    io::PlotPanel& panel =
+        fig.AddPanel(q == 0 ? "heave" : "pitch", xlabel, q == 0 ? io::kHeaveRaoLabel : io::kPitchRaoLabel);
     panel.y_include_zero = true;
-    panel.legend = LegendPlace::kAuto;
+    panel.legend = io::LegendPlace::kAuto;
     for (std::size_t c = 0; c < cases.size(); ++c) {
       const auto& pts = cases[c].points;
       std::vector<std::size_t> order(pts.size());
@@ -52,14 +52,14 @@ PlotFigure CalibrationPlot(const std::vector<opt::CalibrationCase>& cases, const
         after.push_back(std::abs(q == 0 ? r.predictions_after[c].heave[i] : r.predictions_after[c].pitch[i]));
       }
       const std::string colour = kColours[c % 6];
-      PlotSeries m = PlotSeries::Markers(cases[c].label + " measured", x, meas);
+      io::PlotSeries m = io::PlotSeries::Markers(cases[c].label + " measured", x, meas);
       m.hollow_markers = true;
       m.color = colour;
-      PlotSeries b = PlotSeries::Line(cases[c].label + " Cs " + F(Cs_initial), x, before);
+      io::PlotSeries b = io::PlotSeries::Line(cases[c].label + " Cs " + F(Cs_initial), x, before);
       b.dash = "6 4";
       b.color = colour;
       b.line_width_px = 1.2;
-      PlotSeries a = PlotSeries::Line(
+      io::PlotSeries a = io::PlotSeries::Line(
           cases[c].label + " Cs " + F(r.case_Cs[c]) + " ± " + F(r.case_Cs_std_error[c]), x, after);
       a.color = colour;
       panel.series.push_back(m);
@@ -70,4 +70,4 @@ PlotFigure CalibrationPlot(const std::vector<opt::CalibrationCase>& cases, const
   return fig;
 }
 
-}  // namespace hullopt::io
+}  // namespace hullopt::calib

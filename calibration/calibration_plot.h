@@ -5,13 +5,13 @@
 #include <vector>
 
 #include "io/report/svg_plot.h"
-#include "optimizer/cs_calibration.h"
+#include "calibration/fit/cs_calibration.h"
 
-namespace hullopt::io {
+namespace hullopt::calib {
 
 /// Per case: measured magnitudes (hollow circles), computed at Cs_initial (dashed) and at the fitted Cs
 /// (solid), at the measured points, against λ/L when every case has it, else ω_e [rad/s].
-PlotFigure CalibrationPlot(const std::vector<opt::CalibrationCase>& cases, const opt::CsCalibrationResult& r,
+io::PlotFigure CalibrationPlot(const std::vector<opt::CalibrationCase>& cases, const CsCalibrationResult& r,
                            double Cs_initial);
 
-}  // namespace hullopt::io
+}  // namespace hullopt::calib

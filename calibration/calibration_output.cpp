@@ -1,4 +1,4 @@
-#include "io/config/calibration_output.h"
+#include "calibration/calibration_output.h"
 
 #include <cstdio>
 #include <nlohmann/json.hpp>
@@ -6,7 +6,7 @@
 
 #include "hullopt/version.h"
 
-namespace hullopt::io {
+namespace hullopt::calib {
 namespace {
 
 nlohmann::json Peak(const opt::RaoPeak& p) {
@@ -22,7 +22,7 @@ std::string F(double v, const char* f = "%.6g") {
 }  // namespace
 
 std::string CalibrationJson(const CalibrateConfig& config, const std::vector<opt::CalibrationCase>& cases,
-                            const opt::CsCalibrationResult& r) {
+                            const CsCalibrationResult& r) {
   using nlohmann::json;
   json j;
   j["hullopt_version"] = kVersion;
@@ -30,8 +30,8 @@ std::string CalibrationJson(const CalibrateConfig& config, const std::vector<opt
       "heave |x3|/A [m/m], pitch |x5|/(kA) [-], k = omega^2/g, phases [deg] lead positive relative to the "
       "wave "
       "crest at the CG; residuals weighted (see residual_scale and weights)";
-  j["mode"] = opt::ToString(r.mode);
-  if (r.mode == opt::CsFitMode::kSingle) {
+  j["mode"] = ToString(r.mode);
+  if (r.mode == CsFitMode::kSingle) {
     j["Cs"] = r.parameters[0];
     j["Cs_std_error"] = r.parameter_std_errors[0];
   } else {
@@ -52,9 +52,9 @@ std::string CalibrationJson(const CalibrateConfig& config, const std::vector<opt
   j["converged"] = r.converged;
   j["covariance_ok"] = r.covariance_ok;
   j["Cs_initial"] = config.options.Cs_initial;
-  j["residual_scale"] = opt::ToString(config.options.residual_scale);
+  j["residual_scale"] = ToString(config.options.residual_scale);
   j["weights"] = {{"heave", config.options.heave_weight}, {"pitch", config.options.pitch_weight}};
-  j["loss"] = {{"type", opt::ToString(config.options.loss)}, {"scale", config.options.loss_scale}};
+  j["loss"] = {{"type", ToString(config.options.loss)}, {"scale", config.options.loss_scale}};
   j["use_phases"] = config.options.use_phases;
   j["parameter_name"] = config.parameter_name;
   json params = json::array();
@@ -110,14 +110,14 @@ std::string CalibrationJson(const CalibrateConfig& config, const std::vector<opt
 
 std::string CalibratedSolverYaml(const CalibrateConfig& config,
                                  const std::vector<opt::CalibrationCase>& cases,
-                                 const opt::CsCalibrationResult& r, int c) {
+                                 const CsCalibrationResult& r, int c) {
   std::ostringstream s;
   s << "# hullopt " << kVersion << " calibrate: sectional damping coefficient Cs fitted to tank RAOs\n"
     << "# case: " << cases[c].label << " (" << cases[c].points.size() << " measured points)\n"
-    << "# mode " << opt::ToString(r.mode) << ", standard error " << F(r.case_Cs_std_error[c], "%.3g")
+    << "# mode " << ToString(r.mode) << ", standard error " << F(r.case_Cs_std_error[c], "%.3g")
     << " (1 sigma), rms residual " << F(r.rms_residual_before, "%.4g") << " -> " << F(r.rms_residual, "%.4g")
     << ", reduced chi-square " << F(r.reduced_chi_square, "%.4g") << "\n";
-  if (r.mode == opt::CsFitMode::kLinearInParameter) {
+  if (r.mode == CsFitMode::kLinearInParameter) {
     s << "# law: Cs = " << F(r.parameters[0]) << " + " << F(r.parameters[1]) << " * " << config.parameter_name
       << " (" << config.parameter_name << " = " << F(cases[c].hull_parameter) << " here)\n";
   }
@@ -126,4 +126,4 @@ std::string CalibratedSolverYaml(const CalibrateConfig& config,
   return s.str();
 }
 
-}  // namespace hullopt::io
+}  // namespace hullopt::calib
