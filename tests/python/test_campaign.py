@@ -67,8 +67,9 @@ def test_optimize_from_a_dict_equals_the_cli(tmp_path):
     result = hullopt.optimize(config, out=tmp_path / "py", threads=1, plots=False)
     assert result.complete
     assert len(result.history) == 13  # the base design and 12 evaluations of the one start
+    # Same columns under the CSV's names (units in the names, e.g. L_max_m is L_m), same values.
     assert_same_history(result.history, cli_history(tmp_path / "cli" / "history.csv"))
-    # The column names are the CSV's, units included.
+    assert "L_m" in result.history.columns
     # best: the feasible row of lowest objective, as summary.json says.
     feasible = result.history[result.history["feasible"]]
     assert result.best["objective"] == feasible["objective"].min()
