@@ -46,6 +46,11 @@ std::unique_ptr<CampaignKind> MakeKind(const CampaignSpec& spec, const CampaignR
 }  // namespace
 
 CampaignResult RunCampaign(const CampaignSpec& spec, const CampaignRunOptions& options) {
+  const YAML::Node& tree = spec.config;
+  if (spec.config_file.empty() && tree.IsMap() && tree["optimize"] && tree["optimize"].IsMap() &&
+      tree["optimize"]["pareto"])
+    throw io::InputError(spec.source + ": key 'optimize.pareto': a Pareto sweep runs from a config file (it "
+                         "writes its points' configs beside their folders); give the config as a file");
   if (spec.command != io::CampaignCommand::kOptimize || spec.config_file.empty() ||
       !HasParetoSweep(spec.config_file)) {
     auto kind = MakeKind(spec, options);

@@ -123,3 +123,10 @@ def test_a_bad_campaign_dict_is_refused_with_the_key(tmp_path):
     config["optimize"]["max_evaluationz"] = 3
     with pytest.raises(hullopt.InputError, match="max_evaluationz"):
         hullopt.optimize(config, out=tmp_path / "bad", plots=False)
+
+
+def test_a_pareto_sweep_needs_a_config_file(tmp_path):
+    config = small_campaign()
+    config["optimize"]["pareto"] = {"quantity": "P_E_kW", "points": 2, "to": 10000}
+    with pytest.raises(hullopt.InputError, match="optimize.pareto"):
+        hullopt.optimize(config, out=tmp_path / "p", plots=False)
