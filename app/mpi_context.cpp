@@ -67,4 +67,21 @@ std::vector<std::string> MpiGather(const std::string& text) { return {text}; }
 
 #endif
 
+namespace {
+
+class ProcessCommImpl : public campaign::CampaignComm {
+ public:
+  int Rank() const override { return MpiRank(); }
+  int Size() const override { return MpiSize(); }
+  std::string Broadcast(const std::string& text) const override { return MpiBroadcast(text); }
+  std::vector<std::string> Gather(const std::string& text) const override { return MpiGather(text); }
+};
+
+}  // namespace
+
+const campaign::CampaignComm& ProcessComm() {
+  static const ProcessCommImpl comm;
+  return comm;
+}
+
 }  // namespace hullopt::app

@@ -5,6 +5,8 @@
 #include <string>
 #include <vector>
 
+#include "campaign/campaign_comm.h"
+
 namespace hullopt::app {
 
 /// Call once at the start/end of main. No-ops without MPI.
@@ -20,5 +22,8 @@ int MpiSize();  ///< 1 without MPI
 std::string MpiBroadcast(const std::string& text);
 /// Every rank's text, in rank order, on rank 0 (other ranks get an empty list).
 std::vector<std::string> MpiGather(const std::string& text);
+
+/// The processes of this run as the campaign library sees them (MPI_COMM_WORLD, or the one process).
+const campaign::CampaignComm& ProcessComm();
 
 }  // namespace hullopt::app

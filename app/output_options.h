@@ -2,7 +2,7 @@
 // The console and figure options of the commands: --quiet on every command (no result lines on stdout, for
 // scripted runs and campaigns; warnings and errors still go to stderr) and --no-plots on the commands that
 // draw figures (the numbers only: no SVG figures and no report.html, which shows them). Campaign commands
-// carry both in CampaignCliOptions (app/campaign_runner.h); the others read them here.
+// carry both in CampaignCliOptions (app/campaign_command.h); the others read them here.
 #include <ostream>
 
 #include "app/cli_app.h"

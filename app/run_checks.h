@@ -20,10 +20,7 @@ void ResetForceOption();
 /// io::kCostLimitBytes or io::kCostLimitSeconds and --force was not given (with --force: a note instead).
 void CheckRunCost(const std::string& command, const io::StripWork& work);
 
-/// CheckRunCost for a campaign whose resolved config is `resolved` and campaign block `block`: at most
-/// `evaluations` designs (each one kernel and one sweep over the sea frequencies; the number is set by
-/// count_key), `parallel` of them at a time. Nothing for an analytic objective (no strip solver).
-void CheckCampaignCost(const std::string& command, const YAML::Node& resolved, const std::string& block,
-                       long evaluations, const std::string& count_key, int parallel);
+/// Whether --force was given on this command line (the campaigns take it as CampaignRunOptions::force).
+bool ForceGiven();
 
 }  // namespace hullopt::app

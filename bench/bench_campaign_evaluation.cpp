@@ -11,7 +11,8 @@
 #include <string>
 #include <vector>
 
-#include "app/campaign_setup.h"
+#include "campaign/campaign_setup.h"
+#include "campaign/run_campaign.h"
 #include "io/config/design_config.h"
 #include "io/config/motion_config.h"
 #include "evaluation/trial_design.h"
@@ -28,8 +29,9 @@ const std::string kConfig = std::string(HULLOPT_SOURCE_DIR) + "/configs/optimize
 // The start design of the default campaign (its base hull): L/B, B/T, Cp, LCF.
 const std::vector<double> kStart = {11.0, 2.0, 0.69, -8.3};
 
-app::LoadedCampaign& Campaign() {
-  static app::LoadedCampaign c = app::LoadCampaign(kConfig, io::CampaignCommand::kOptimize);
+campaign::LoadedCampaign& Campaign() {
+  static campaign::LoadedCampaign c =
+      campaign::LoadCampaign(campaign::CampaignSpec::FromFile(io::CampaignCommand::kOptimize, kConfig));
   return c;
 }
 

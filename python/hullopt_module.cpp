@@ -12,11 +12,14 @@
 #include <algorithm>
 #include <cmath>
 #include <complex>
+#include <functional>
 #include <sstream>
 #include <string>
 #include <vector>
 
+#include "app/campaign_report.h"
 #include "app/commands.h"
+#include "campaign/run_campaign.h"
 #include "evaluation/adaptive_frequency_grid.h"
 #include "evaluation/design_spec.h"
 #include "evaluation/hull_plausibility.h"
@@ -30,6 +33,8 @@
 #include "io/config/water_config.h"
 #include "io/config/yaml_map.h"
 #include "io/formats/input_error.h"
+#include "io/formats/output_lock.h"
+#include "io/formats/utf8_text.h"
 #include "optimizer/rao_peak.h"
 #include "seakeeping/motions/calm_water.h"
 #include "seakeeping/motions/forced_oscillation.h"
@@ -686,6 +691,92 @@ PYBIND11_MODULE(_hullopt, m) {
       },
       py::arg("config_file"), py::arg("name") = "design",
       "The design of a hull config (hull, water, speed, solver, mass), read as `hullopt evaluate` reads it.");
+
+  m.def(
+      "_run_campaign",
+      [](const std::string& command, const py::object& spec, const std::string& out, bool resume,
+         long max_evaluations, int threads, bool plots) {
+        const io::CampaignCommand kind =
+            command == "explore" ? io::CampaignCommand::kExplore : io::CampaignCommand::kOptimize;
+        campaign::CampaignSpec s = py::isinstance<py::str>(spec) || py::hasattr(spec, "__fspath__")
+                                       ? campaign::CampaignSpec::FromFile(kind, py::str(spec).cast<std::string>())
+                                       : campaign::CampaignSpec::FromTree(kind, ToYaml(spec), kPythonSource);
+        campaign::CampaignRunOptions o;
+        o.out = out;
+        o.resume = resume;
+        o.max_evaluations = max_evaluations;
+        o.threads = threads;
+        o.plots = plots;
+        std::vector<std::string> messages;
+        o.message = [&messages](const std::string& line) { messages.push_back(line); };
+        o.write_report = [](const campaign::CampaignReportRequest& r) {
+          app::WriteCampaignReport(r.out, r.command, r.config_file, r.campaign_warnings, r.active_set);
+        };
+        for (const std::string& path : {out, s.Name()})
+          if (!io::IsValidUtf8(path)) throw io::InputError(path + ": not valid UTF-8 (paths are written to JSON outputs)");
+        campaign::CampaignResult r;
+        {
+          py::gil_scoped_release release;
+          io::OutputFolderLock lock(out, command);
+          r = campaign::RunCampaign(s, o);
+        }
+        // The log's columns (io::HistoryLayout::Header(), as history.csv has them), one list each.
+        py::dict columns;
+        const io::HistoryLayout& L = r.layout;
+        const std::size_t n = r.history.size();
+        auto numbers = [&](const std::function<double(std::size_t)>& f) {
+          py::array_t<double> a(static_cast<py::ssize_t>(n));
+          for (std::size_t i = 0; i < n; ++i) a.mutable_at(i) = f(i);
+          return a;
+        };
+        std::vector<long> evaluation(n), run(n), step(n);
+        std::vector<bool> feasible(n);
+        std::vector<std::string> message(n);
+        for (std::size_t i = 0; i < n; ++i) {
+          const opt::EvaluationRecord& rec = r.history[i];
+          evaluation[i] = static_cast<long>(i);
+          run[i] = rec.run;
+          step[i] = rec.step;
+          feasible[i] = rec.feasible;
+          message[i] = rec.result.produced ? (rec.result.warning.empty() ? "" : io::kWarningPrefix + rec.result.warning)
+                                           : rec.result.error;
+        }
+        columns["evaluation"] = evaluation;
+        for (std::size_t v = 0; v < L.variables.size(); ++v)
+          columns[py::str(L.variables[v])] = numbers([&](std::size_t i) { return r.history[i].x[v]; });
+        columns["objective"] = numbers([&](std::size_t i) {
+          return r.history[i].result.produced ? r.history[i].result.objective : NAN;
+        });
+        columns["feasible"] = feasible;
+        for (std::size_t k = 0; k < L.seas.size(); ++k)
+          columns[py::str(L.seas[k])] = numbers([&](std::size_t i) {
+            const auto& res = r.history[i].result;
+            return res.produced && k < res.sea_values.size() ? res.sea_values[k] : NAN;
+          });
+        for (std::size_t q = 0; q < L.quantities.size(); ++q)
+          columns[py::str(L.quantities[q])] = numbers([&](std::size_t i) { return r.reported[i][q]; });
+        columns["wall_time_s"] = numbers([&](std::size_t i) { return r.history[i].wall_time_s; });
+        columns["run"] = run;
+        columns["step"] = step;
+        columns["message"] = message;
+        py::dict d;
+        d["complete"] = r.complete;
+        d["command"] = r.command;
+        d["log_path"] = r.log_path;
+        d["columns"] = columns;
+        d["column_order"] = L.Header();
+        d["variables"] = L.variables;
+        d["replayed"] = r.replayed;
+        d["best"] = r.best;
+        d["summary"] = r.summary.is_null() ? std::string() : r.summary.dump();
+        d["text"] = r.text + r.sweep;
+        d["messages"] = messages;
+        return d;
+      },
+      py::arg("command"), py::arg("spec"), py::arg("out"), py::arg("resume") = true,
+      py::arg("max_evaluations") = 0, py::arg("threads") = 0, py::arg("plots") = true,
+      "The campaign library (campaign::RunCampaign) for hullopt.optimize/explore: a dict of columns and the "
+      "summary; use hullopt.optimize().");
 
   m.def(
       "run",

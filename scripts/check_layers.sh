@@ -4,7 +4,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 layers=(parametric_hull resistance seakeeping/green seakeeping/sections seakeeping/strip seakeeping/motions seas optimizer calibration/fit evaluation calibration/model
-        io/formats io/config io/report calibration app)
+        io/formats io/config io/report calibration campaign app)
 rank_of() {  # rank of a path's layer, or -1 for paths outside the layered modules
   local p=$1 i best=-1 bestlen=0
   for i in "${!layers[@]}"; do
@@ -22,6 +22,6 @@ while IFS= read -r file; do
     [ "$ir" -lt 0 ] && continue
     if [ "$ir" -gt "$fr" ]; then echo "up-layer include: $file -> $inc"; bad=1; fi
   done < <(sed -n 's/^#include "\([^"]*\)".*/\1/p' "$file")
-done < <(find parametric_hull resistance seakeeping seas optimizer calibration evaluation io app -name '*.h' -o -name '*.cpp' -o -name '*.c' | sort)
+done < <(find parametric_hull resistance seakeeping seas optimizer calibration evaluation io campaign app -name '*.h' -o -name '*.cpp' -o -name '*.c' | sort)
 [ $bad -eq 0 ] && echo "module graph: no include runs up a layer"
 exit $bad

@@ -12,7 +12,7 @@
 //     variables: { L_over_B: [8, 16], Cp: [0.55, 0.75] }    # [lower, upper]
 //     start: { L_over_B: 11.0 }     # optional; default: the value in hull.parametric
 //     constraints: { L_max_m: 75, Cvp_min: 0.5 }           # <quantity>_max|_min[_unit]: limit
-//     objective: { ... }            # read by the evaluator factory (app/evaluator_factory.h)
+//     objective: { ... }            # read by the evaluator factory (campaign/evaluator_factory.h)
 //     samples: 200                  # explore only
 //     method: sobol                 # explore only: sobol | lhs
 //

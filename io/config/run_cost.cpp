@@ -4,6 +4,8 @@
 #include <cmath>
 #include <cstdio>
 
+#include "io/formats/input_error.h"
+
 namespace hullopt::io {
 namespace {
 
@@ -166,6 +168,17 @@ std::string RunCostRefusal(const StripWork& w, const RunCost& c) {
                 memory ? Bytes(c.bytes).c_str() : Seconds(c.seconds).c_str(),
                 memory ? Bytes(kCostLimitBytes).c_str() : Seconds(kCostLimitSeconds).c_str());
   return DescribeRunCost(w, c) + "; " + limit + ": " + driver + "; reduce it, or give --force to run it anyway";
+}
+
+std::string CheckRunCostLine(const std::string& command, const StripWork& work, bool force) {
+  const RunCost cost = EstimateRunCost(work);
+  const std::string refusal = RunCostRefusal(work, cost);
+  if (!refusal.empty() && !force) throw InputError(command + ": " + refusal);
+  // Runs that finish within a minute and fit in 1 GiB are not worth a line: stderr then holds only warnings.
+  constexpr double kQuietSeconds = 60.0, kQuietBytes = 1024.0 * 1024.0 * 1024.0;
+  if (refusal.empty() && cost.seconds < kQuietSeconds && cost.bytes < kQuietBytes) return "";
+  return "hullopt: " + command + ": " + DescribeRunCost(work, cost) +
+         (refusal.empty() ? "" : " (beyond the limits; running because of --force)");
 }
 
 }  // namespace hullopt::io

@@ -58,4 +58,10 @@ std::string DescribeRunCost(const StripWork& work, const RunCost& cost);
 /// solver.frequencies), with "give --force to run it anyway".
 std::string RunCostRefusal(const StripWork& work, const RunCost& cost);
 
+/// The cost check of a run: throws io::InputError ("<command>: <refusal>") when the estimate is beyond a
+/// threshold and `force` is false; returns the line to show (no newline: "hullopt: <command>: cost estimate:
+/// ...", with a note when running past a threshold because of force), or "" for a run that finishes within a
+/// minute and fits in 1 GiB (nothing worth a line).
+std::string CheckRunCostLine(const std::string& command, const StripWork& work, bool force);
+
 }  // namespace hullopt::io

@@ -11,7 +11,9 @@ One import names the public objects:
     design, Design                                 a design from Python values (speed_kn= or speed_m_s=), built
                                                    as the commands build a config's
     load_design                                    a design config as `hullopt evaluate` reads it
-    run                                            any hullopt command in-process (campaigns)
+    optimize, explore, CampaignResult              a campaign (config file or dict) in an output folder,
+                                                   resumed from its log; history as a pandas DataFrame
+    run                                            any hullopt command in-process
     rao_dataset, evaluation_dataset                results as labelled xarray Datasets (units in attrs), their
                                                    warnings through Python's warnings (HulloptWarning)
     InputError                                     bad input; the message is the CLI's
@@ -25,6 +27,7 @@ from ._hullopt import (  # noqa: F401
     InputError,
     MassProperties,
     __version__,
+    _run_campaign,
     compute_raos,
     design,
     evaluate,
@@ -130,3 +133,90 @@ def _design_rao_dataset(self, omega_rad_s=None):
 
 
 Design.rao_dataset = _design_rao_dataset
+
+
+class CampaignResult:
+    """What optimize() and explore() return.
+
+    history: a pandas DataFrame, one row per evaluation in log order, with the columns of the campaign's log
+        (history.csv / samples.csv) under the same names (units in the names as the CSV headers have them):
+        evaluation, the design variables, objective, feasible, the per-sea values, the constrained quantities,
+        wall_time_s, run, step, message (a refusal, or "warning: ..." for a design with a warning).
+    best: a dict of the best feasible design: evaluation, objective and its variables by name; None when no
+        evaluation is feasible.
+    complete: False when the call stopped at max_evaluations (run it again to resume).
+    summary: summary.json as a dict (empty when not complete); text: the result lines the command line prints;
+    messages: the notes and warnings the command line prints on stderr; out: the output folder.
+    """
+
+    def __init__(self, raw, out):
+        import json
+        import pandas as pd
+
+        self.out = out
+        self.command = raw["command"]
+        self.complete = raw["complete"]
+        self.log_path = raw["log_path"]
+        self.replayed = raw["replayed"]
+        self.text = raw["text"]
+        self.messages = list(raw["messages"])
+        self.summary = json.loads(raw["summary"]) if raw["summary"] else {}
+        columns = raw["columns"]
+        order = raw["column_order"].split(",")
+        self.history = pd.DataFrame({k: columns[k] for k in order}, columns=order)
+        self.variables = list(raw["variables"])
+        b = raw["best"]
+        if b < 0:
+            self.best = None
+        else:
+            row = self.history.iloc[b]
+            self.best = {"evaluation": int(b), "objective": float(row["objective"])}
+            self.best.update({v: float(row[v]) for v in self.variables})
+
+    def __repr__(self):
+        n = len(self.history)
+        head = f"hullopt {self.command}: {n} evaluations in {self.out}"
+        if self.replayed:
+            head += f" ({self.replayed} replayed from the log)"
+        if not self.complete:
+            head += "; stopped at max_evaluations (call again to resume)"
+            if self.best is not None:
+                head += (f"\nbest objective so far {self.best['objective']:.10g} at evaluation "
+                         f"{self.best['evaluation']}")
+            return head
+        return head + "\n" + self.text.rstrip("\n")
+
+
+def _campaign(command, spec, out, resume, max_evaluations, threads, plots):
+    import os
+
+    if isinstance(spec, os.PathLike):
+        spec = os.fspath(spec)
+    if not isinstance(spec, (str, dict)):
+        raise TypeError("spec: a campaign config file (str or path) or a dict of its blocks")
+    if max_evaluations is not None and max_evaluations < 1:
+        raise ValueError(f"max_evaluations = {max_evaluations}: must be >= 1 (None = no limit)")
+    raw = _run_campaign(command, spec, os.fspath(out), bool(resume), int(max_evaluations or 0), int(threads),
+                        bool(plots))
+    result = CampaignResult(raw, os.fspath(out))
+    _warn([m for m in result.messages if m.startswith("hullopt: warning: ")], stacklevel=4)
+    return result
+
+
+def optimize(spec, out, resume=True, max_evaluations=None, threads=0, plots=True):
+    """Runs an optimize campaign, as `hullopt optimize CONFIG --out OUT` does, and returns a CampaignResult.
+
+    spec: the campaign config file (str or path), or a dict of its blocks (hull, mass, speed, solver, seas,
+    optimize, ...; the values as a config file has them, no YAML text). out: the output folder (the command's
+    files: history.csv, summary.json, best.yaml, figures; report.html for a config file when plots is true).
+    resume: a folder holding this campaign's log is continued (its evaluations replayed, not recomputed); with
+    resume=False such a folder is refused. max_evaluations: stop after this many computed evaluations (the log
+    keeps them; call again to continue). threads: OpenMP threads (0 = the default). Warnings of the campaign
+    arrive as HulloptWarning; bad input raises InputError with the CLI's message.
+    """
+    return _campaign("optimize", spec, out, resume, max_evaluations, threads, plots)
+
+
+def explore(spec, out, resume=True, max_evaluations=None, threads=0, plots=True):
+    """Runs an explore campaign (samples.csv), as optimize() does for `hullopt optimize`."""
+    return _campaign("explore", spec, out, resume, max_evaluations, threads, plots)

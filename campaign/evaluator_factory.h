@@ -8,7 +8,7 @@
 #include "optimizer/campaign.h"
 #include "optimizer/evaluator.h"
 
-namespace hullopt::app {
+namespace hullopt::campaign {
 
 /// root: the whole config; block: the campaign block (optimize:/explore:) whose `objective` key selects the
 /// objective; campaign: variables (in order) and constraints as read. Currently supports only the analytic
@@ -17,4 +17,4 @@ namespace hullopt::app {
 std::unique_ptr<opt::Evaluator> MakeEvaluator(io::YamlMap& root, io::YamlMap& block,
                                               const opt::CampaignDefinition& campaign);
 
-}  // namespace hullopt::app
+}  // namespace hullopt::campaign

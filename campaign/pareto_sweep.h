@@ -16,14 +16,15 @@
 #include <functional>
 #include <string>
 
-namespace hullopt::app {
+namespace hullopt::campaign {
 
 /// True if the config's optimize block has a `pareto` key.
 bool HasParetoSweep(const std::string& config_file);
 
-/// Runs the sweep; `run_optimize(config, out)` runs one ordinary campaign. Throws io::InputError for a bad
-/// pareto block (fewer than 2 points, unknown quantity, to <= from, a quantity already constrained).
-void RunParetoSweep(const std::string& config_file, const std::string& out_dir,
+/// Runs the sweep; `run_optimize(config, out)` runs one ordinary campaign. Returns the sweep's result line
+/// (points, range, files written; no newline). Throws io::InputError for a bad pareto block (fewer than 2
+/// points, unknown quantity, to <= from, a quantity already constrained).
+std::string RunParetoSweep(const std::string& config_file, const std::string& out_dir,
                     const std::function<void(const std::string&, const std::string&)>& run_optimize);
 
-}  // namespace hullopt::app
+}  // namespace hullopt::campaign

@@ -1,10 +1,10 @@
-#include "app/evaluator_factory.h"
+#include "campaign/evaluator_factory.h"
 
 #include "io/config/msi_objective_config.h"
 #include "io/formats/input_error.h"
 #include "optimizer/analytic_objectives.h"
 
-namespace hullopt::app {
+namespace hullopt::campaign {
 
 std::unique_ptr<opt::Evaluator> MakeEvaluator(io::YamlMap& root, io::YamlMap& block,
                                               const opt::CampaignDefinition& campaign) {
@@ -25,4 +25,4 @@ std::unique_ptr<opt::Evaluator> MakeEvaluator(io::YamlMap& root, io::YamlMap& bl
   return std::make_unique<opt::AnalyticEvaluator>(o);
 }
 
-}  // namespace hullopt::app
+}  // namespace hullopt::campaign

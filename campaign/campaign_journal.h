@@ -3,27 +3,29 @@
 // The durable log of a campaign (history.csv or samples.csv) and its resume logic: on start, rows already in
 // the file are read back (an incomplete last line from a kill is discarded) and offered for replay; rows are
 // appended and fsync'd one by one as evaluations complete; a log made with a different config is refused.
-// Under MPI, rank 0 reads and writes the file; the logged rows are broadcast so every rank can replay.
+// With several processes (CampaignComm), rank 0 reads and writes the file; the logged rows are broadcast so
+// every rank can replay.
 #include <map>
 #include <memory>
 #include <string>
 #include <utility>
 #include <vector>
 
+#include "campaign/campaign_comm.h"
 #include "io/formats/history_csv.h"
 #include "optimizer/campaign.h"
 #include "optimizer/constraint_set.h"
 #include "optimizer/evaluation_record.h"
 #include "optimizer/evaluator.h"
 
-namespace hullopt::app {
+namespace hullopt::campaign {
 
 class CampaignJournal {
  public:
   /// Collective. Reads DIR/file and DIR/file.config_hash on rank 0 and shares them. Throws io::InputError if
   /// the log exists but was made with a different config (hash of config.resolved.yaml; the message names the
   /// first key where DIR/config.resolved.yaml of the earlier run differs from `resolved`), or is damaged.
-  CampaignJournal(const std::string& dir, const std::string& file, io::HistoryLayout layout,
+  CampaignJournal(const CampaignComm& comm, const std::string& dir, const std::string& file, io::HistoryLayout layout,
                   const std::string& config_hash, const YAML::Node& resolved,
                   const opt::ConstraintSet& constraints, std::size_t quantities);
   ~CampaignJournal();
@@ -78,6 +80,7 @@ class CampaignJournal {
   opt::EvaluationRecord FromRow(const io::HistoryRow& row) const;
   std::string FirstProblem(opt::Evaluator& evaluator, const opt::CampaignDefinition& def) const;
 
+  const CampaignComm& comm_;
   std::string dir_, path_, hash_path_, config_hash_;
   io::HistoryLayout layout_;
   const opt::ConstraintSet& constraints_;
@@ -92,4 +95,4 @@ class CampaignJournal {
   long replayed_ = 0;
 };
 
-}  // namespace hullopt::app
+}  // namespace hullopt::campaign

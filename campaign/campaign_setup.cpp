@@ -1,23 +1,38 @@
-#include "app/campaign_setup.h"
+#include "campaign/campaign_setup.h"
 
 #ifdef _OPENMP
 #include <omp.h>
 #endif
 
-#include <cstdio>
 #include <optional>
 
-#include "app/evaluator_factory.h"
+#include "campaign/evaluator_factory.h"
+#include "campaign/run_campaign.h"
 #include "io/config/campaign_outputs.h"
+#include "io/config/run_cost.h"
 #include "io/report/evaluation_report.h"
 #include "io/formats/input_error.h"
 #include "evaluation/msi_evaluator.h"
 
-namespace hullopt::app {
+namespace hullopt::campaign {
 
-LoadedCampaign LoadCampaign(const std::string& config_file, io::CampaignCommand command) {
+namespace {
+
+/// The config's root mapping: the file as loaded, or a copy of the tree (built from values, e.g. Python dicts,
+/// whose keys are text and unique by construction: no YAML text to check for duplicate or tagged keys).
+io::YamlMap RootOf(const CampaignSpec& spec) {
+  if (!spec.config_file.empty()) return io::YamlMap::LoadFile(spec.config_file);
+  if (!spec.config.IsMap()) throw io::InputError(spec.source + ": the config must be a mapping of key: value pairs");
+  return io::YamlMap(YAML::Clone(spec.config), "", spec.source, YAML::Node(YAML::NodeType::Map));
+}
+
+}  // namespace
+
+LoadedCampaign LoadCampaign(const CampaignSpec& spec) {
+  const io::CampaignCommand command = spec.command;
+  const std::string& config_file = spec.Name();
   LoadedCampaign out;
-  io::YamlMap root = io::YamlMap::LoadFile(config_file);
+  io::YamlMap root = RootOf(spec);
   out.raw = YAML::Clone(root.raw());
   std::optional<io::YamlMap> block;
   out.config = io::ReadCampaignConfig(root, out.raw, command, &block);
@@ -67,20 +82,19 @@ CampaignWarnings CollectWarnings(const std::vector<opt::EvaluationRecord>& recor
   return w;
 }
 
-void ReportWarnings(const std::vector<opt::EvaluationRecord>& records, long best, const std::string& history_file,
-                    bool quiet, nlohmann::json* summary) {
+std::string ReportWarnings(const std::vector<opt::EvaluationRecord>& records, long best,
+                           const std::string& history_file, nlohmann::json* summary) {
   const CampaignWarnings w = CollectWarnings(records);
   (*summary)["evaluations_with_warning"] = w.count;
   if (best >= 0 && !records[best].result.warning.empty()) (*summary)["best_warning"] = records[best].result.warning;
-  if (quiet || w.count == 0) return;
-  std::fprintf(stderr,
-               "hullopt: warning: %ld of %zu evaluations carry a warning (message column of %s); first, "
-               "evaluation %ld: %s\n",
-               w.count, records.size(), history_file.c_str(), w.first_evaluation, w.first_message.c_str());
+  if (w.count == 0) return "";
+  return "hullopt: warning: " + std::to_string(w.count) + " of " + std::to_string(records.size()) +
+         " evaluations carry a warning (message column of " + history_file + "); first, evaluation " +
+         std::to_string(w.first_evaluation) + ": " + w.first_message;
 }
 
 std::string CheckBestResolution(const LoadedCampaign& campaign, const std::vector<double>& x, long evaluation,
-                                bool quiet, nlohmann::json* summary) {
+                                nlohmann::json* summary) {
   if (!campaign.resolution.enabled) return "";
   auto* checkable = dynamic_cast<eval::ResolutionCheckable*>(campaign.evaluator.get());
   if (!checkable) return "";
@@ -92,8 +106,20 @@ std::string CheckBestResolution(const LoadedCampaign& campaign, const std::vecto
   const std::string warning = "resolution check of the best design (evaluation " + std::to_string(evaluation) +
                               "): " + r.warning;
   (*summary)["resolution_warning"] = warning;
-  if (!quiet) std::fprintf(stderr, "hullopt: warning: %s\n", warning.c_str());
   return warning;
 }
 
-}  // namespace hullopt::app
+std::string CheckCampaignCost(const std::string& command, const YAML::Node& resolved, const std::string& block,
+                              long evaluations, const std::string& count_key, int parallel, bool force) {
+  const YAML::Node objective = resolved[block] ? resolved[block]["objective"] : YAML::Node();
+  if (objective && objective.IsMap() && objective["analytic"]) return "";
+  // 60: the sea-evaluation grid when solver.frequencies is absent (app/design_case.h EvaluationFrequencies).
+  io::StripWork work = io::StripWorkFromResolved(resolved, 60);
+  work.kernels = evaluations;
+  work.count_key = count_key;
+  work.parallel = parallel;
+  work.parallel_key = "--threads";
+  return io::CheckRunCostLine(command, work, force);
+}
+
+}  // namespace hullopt::campaign

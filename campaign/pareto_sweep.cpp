@@ -1,4 +1,4 @@
-#include "app/pareto_sweep.h"
+#include "campaign/pareto_sweep.h"
 
 #include <yaml-cpp/yaml.h>
 
@@ -17,7 +17,7 @@
 #include "io/report/svg_plot.h"
 #include "io/config/yaml_map.h"
 
-namespace hullopt::app {
+namespace hullopt::campaign {
 namespace {
 
 // The anchor's minimum is approached by the local algorithm only to its tolerance: the first limit sits this
@@ -101,7 +101,7 @@ bool HasParetoSweep(const std::string& config_file) {
   }
 }
 
-void RunParetoSweep(const std::string& config_file, const std::string& out_dir,
+std::string RunParetoSweep(const std::string& config_file, const std::string& out_dir,
                     const std::function<void(const std::string&, const std::string&)>& run_optimize) {
   YAML::Node raw = YAML::LoadFile(config_file);
   // Strict read of the pareto block itself (the rest is read by each run).
@@ -235,8 +235,10 @@ void RunParetoSweep(const std::string& config_file, const std::string& out_dir,
   pn.series.push_back(io::PlotSeries::LineMarkers("front", fq, fo));
   pn.series.push_back(io::PlotSeries::Markers("anchor (min " + quantity + ")", {qmin}, {anchor_objective}));
   io::WriteSvg(fig, out_dir + "/pareto.svg");
-  std::printf("pareto: %d points of %s %.6g..%.6g; wrote pareto.csv, pareto.svg and anchor/, point_NN/ in %s\n",
-              points, quantity.c_str(), from, to, out_dir.c_str());
+  char line[200];
+  std::snprintf(line, sizeof line, "pareto: %d points of %s %.6g..%.6g; wrote pareto.csv, pareto.svg and anchor/, point_NN/ in ",
+                points, quantity.c_str(), from, to);
+  return line + out_dir;
 }
 
-}  // namespace hullopt::app
+}  // namespace hullopt::campaign

@@ -1,4 +1,4 @@
-#include "app/campaign_journal.h"
+#include "campaign/campaign_journal.h"
 
 #include <algorithm>
 #include <cmath>
@@ -6,33 +6,33 @@
 #include <filesystem>
 #include <set>
 
-#include "app/mpi_context.h"
-#include "app/output_dir.h"
 #include "io/formats/atomic_file.h"
 #include "io/config/campaign_outputs.h"
+#include "io/config/output_folder.h"
 #include "io/formats/input_error.h"
 #include "io/config/yaml_difference.h"
 
-namespace hullopt::app {
+namespace hullopt::campaign {
 
-CampaignJournal::CampaignJournal(const std::string& dir, const std::string& file, io::HistoryLayout layout,
+CampaignJournal::CampaignJournal(const CampaignComm& comm, const std::string& dir, const std::string& file, io::HistoryLayout layout,
                                  const std::string& config_hash, const YAML::Node& resolved,
                                  const opt::ConstraintSet& constraints, std::size_t quantities)
-    : dir_(dir),
-      path_(OutPath(dir, file)),
-      hash_path_(OutPath(dir, file + ".config_hash")),
+    : comm_(comm),
+      dir_(dir),
+      path_(io::OutPath(dir, file)),
+      hash_path_(io::OutPath(dir, file + ".config_hash")),
       config_hash_(config_hash),
       layout_(std::move(layout)),
       constraints_(constraints),
       quantities_(quantities) {
   // Rank 0 reads; everyone parses the same text, so every rank reaches the same verdict.
   std::string text, stored_hash;
-  if (MpiRank() == 0) {
+  if (comm_.Rank() == 0) {
     text = io::ReadTextFile(path_);
     stored_hash = io::ReadTextFile(hash_path_);
   }
-  text = MpiBroadcast(text);
-  stored_hash = MpiBroadcast(stored_hash);
+  text = comm_.Broadcast(text);
+  stored_hash = comm_.Broadcast(stored_hash);
   const io::HistoryFile log = io::ParseHistory(text, path_, layout_);
   if (log.exists) {
     while (!stored_hash.empty() && (stored_hash.back() == '\n' || stored_hash.back() == ' '))
@@ -40,8 +40,8 @@ CampaignJournal::CampaignJournal(const std::string& dir, const std::string& file
     if (stored_hash != config_hash_) {
       // Say what changed: the earlier run's config.resolved.yaml against this one (a newer hullopt may also
       // have added keys with their defaults).
-      std::string earlier = MpiRank() == 0 ? io::ReadTextFile(OutPath(dir, "config.resolved.yaml")) : "";
-      earlier = MpiBroadcast(earlier);
+      std::string earlier = comm_.Rank() == 0 ? io::ReadTextFile(io::OutPath(dir, "config.resolved.yaml")) : "";
+      earlier = comm_.Broadcast(earlier);
       std::string change;
       try {
         if (!earlier.empty()) change = io::FirstYamlDifference(YAML::Load(earlier), resolved);
@@ -76,8 +76,8 @@ opt::EvaluationRecord CampaignJournal::FromRow(const io::HistoryRow& row) const 
 }
 
 void CampaignJournal::Verify(opt::Evaluator& evaluator, const opt::CampaignDefinition& def) const {
-  std::string problem = MpiRank() == 0 ? FirstProblem(evaluator, def) : std::string();
-  problem = MpiBroadcast(problem);
+  std::string problem = comm_.Rank() == 0 ? FirstProblem(evaluator, def) : std::string();
+  problem = comm_.Broadcast(problem);
   if (!problem.empty())
     throw io::InputError(problem + " (the log was edited or damaged: it cannot be replayed; delete " + path_ +
                          " to start the campaign over)");
@@ -172,7 +172,7 @@ std::string CampaignJournal::FirstProblem(opt::Evaluator& evaluator, const opt::
 }
 
 void CampaignJournal::StartWriting() {
-  if (MpiRank() != 0) return;
+  if (comm_.Rank() != 0) return;
   io::WriteFileAtomically(hash_path_, config_hash_ + "\n");
   appender_ = std::make_unique<io::HistoryAppender>(path_, layout_, valid_bytes_);
 }
@@ -205,4 +205,4 @@ opt::EvaluationRecord CampaignJournal::Deserialise(const std::string& line) cons
   return rec;
 }
 
-}  // namespace hullopt::app
+}  // namespace hullopt::campaign

@@ -1,6 +1,6 @@
 #pragma once
-// Loading and checking a campaign config for `hullopt optimize` / `hullopt explore`: everything that can be
-// wrong with the input is reported here, before any evaluation.
+// Loading and checking a campaign config (optimize, explore): everything that can be wrong with the input is
+// reported here, before any evaluation.
 #include <nlohmann/json.hpp>
 #include <yaml-cpp/yaml.h>
 
@@ -13,7 +13,11 @@
 #include "optimizer/evaluation_record.h"
 #include "optimizer/evaluator.h"
 
-namespace hullopt::app {
+namespace hullopt::campaign {
+struct CampaignSpec;
+}
+
+namespace hullopt::campaign {
 
 struct LoadedCampaign {
   io::CampaignConfig config;
@@ -25,7 +29,7 @@ struct LoadedCampaign {
 };
 
 /// Reads, validates and builds the evaluator. Throws io::InputError with a one-line message.
-LoadedCampaign LoadCampaign(const std::string& config_file, io::CampaignCommand command);
+LoadedCampaign LoadCampaign(const CampaignSpec& spec);
 
 /// Number of OpenMP threads to use: `requested` if > 0, else the OpenMP default (1 without OpenMP).
 int ResolveThreads(int requested);
@@ -37,15 +41,21 @@ struct CampaignWarnings {
   std::string first_message;
 };
 CampaignWarnings CollectWarnings(const std::vector<opt::EvaluationRecord>& records);
-/// Adds "evaluations_with_warning" (and, when the best design has one, "best_warning") to a summary, and
-/// unless quiet prints one line to stderr naming the count, the first such evaluation and its warning.
-void ReportWarnings(const std::vector<opt::EvaluationRecord>& records, long best, const std::string& history_file,
-                    bool quiet, nlohmann::json* summary);
+/// Adds "evaluations_with_warning" (and, when the best design has one, "best_warning") to a summary; returns
+/// "" or one line naming the count, the first such evaluation and its warning.
+std::string ReportWarnings(const std::vector<opt::EvaluationRecord>& records, long best,
+                           const std::string& history_file, nlohmann::json* summary);
 
 /// With the campaign's `resolution_check` on, re-runs the design at x (its best) at the finer resolution and adds
 /// a "resolution_check" block to the summary; a design that is not converged adds "resolution_warning" to the
-/// summary and, unless quiet, one line to stderr. Returns that warning ("" when converged or the check is off).
+/// summary. Returns that warning ("" when converged or the check is off).
 std::string CheckBestResolution(const LoadedCampaign& campaign, const std::vector<double>& x, long evaluation,
-                                bool quiet, nlohmann::json* summary);
+                                nlohmann::json* summary);
 
-}  // namespace hullopt::app
+/// io::CheckRunCostLine for a campaign whose resolved config is `resolved` and campaign block `block`: at most
+/// `evaluations` designs (each one kernel and one sweep over the sea frequencies; the number is set by
+/// count_key), `parallel` of them at a time. "" for an analytic objective (no strip solver).
+std::string CheckCampaignCost(const std::string& command, const YAML::Node& resolved, const std::string& block,
+                              long evaluations, const std::string& count_key, int parallel, bool force);
+
+}  // namespace hullopt::campaign

@@ -1,13 +1,14 @@
 #pragma once
-// The one runner of the campaign commands (`hullopt optimize`, `hullopt explore`): it loads and checks the
-// campaign config, resolves threads and checks the cost, opens the durable log (history.csv, samples.csv) and
-// verifies it for resume, prepares the output folder, shows progress, splits the work over MPI ranks and gathers
-// the records on rank 0 in order, and at the end writes what every campaign writes: summary.json (the common
-// keys, the warnings, the resolution check of the best design), best.yaml and report.html.
+// The one runner of the campaigns (RunCampaign, campaign/run_campaign.h; `hullopt optimize`, `hullopt explore`):
+// it loads and checks the campaign config, resolves threads and checks the cost, opens the durable log
+// (history.csv, samples.csv) and verifies it for resume, prepares the output folder, reports progress, splits
+// the work over processes (CampaignComm) and gathers the records on rank 0 in order, and at the end writes what
+// every campaign writes: summary.json (the common keys, the warnings, the resolution check of the best design),
+// best.yaml and (through the caller's writer) report.html.
 //
 // What differs between campaigns is a CampaignKind: how the evaluations are produced (a multistart optimiser,
-// a sample of the design box), what the kind adds to the summary, its plots and its final lines. A new campaign
-// type is one more CampaignKind and a command that calls RunCampaign (docs/developer-guide.md).
+// a sample of the design box), what the kind adds to the summary, its plots and its result lines. A new
+// campaign type is one more CampaignKind (docs/developer-guide.md).
 #include <nlohmann/json.hpp>
 
 #include <chrono>
@@ -16,25 +17,15 @@
 #include <string>
 #include <vector>
 
-#include "app/campaign_journal.h"
-#include "app/campaign_setup.h"
-#include "app/commands.h"
-#include "app/progress.h"
+#include "campaign/campaign_journal.h"
+#include "campaign/campaign_setup.h"
+#include "campaign/run_campaign.h"
 #include "io/config/campaign_config.h"
 #include "io/formats/input_error.h"
 #include "optimizer/constraint_set.h"
 #include "optimizer/evaluation_record.h"
 
-namespace hullopt::app {
-
-/// The command-line options every campaign command has.
-struct CampaignCliOptions {
-  std::string config;  ///< campaign YAML
-  std::string out;     ///< output folder
-  int threads = 0;     ///< OpenMP threads per process (0 = the OpenMP default)
-  bool quiet = false;  ///< no progress or result lines
-  bool no_plots = false;  ///< no SVG figures and no report.html (the numbers only)
-};
+namespace hullopt::campaign {
 
 /// The size of a campaign, for the cost check and the progress bar.
 struct CampaignSize {
@@ -46,7 +37,7 @@ struct CampaignSize {
 class CampaignRunner;
 
 /// One kind of campaign. The runner calls, in this order: Size, Accept (collective), Run (collective), and on
-/// rank 0 after the evaluations Summarise, WritePlots, PrintResult.
+/// rank 0 after the evaluations Summarise, WritePlots, ResultText.
 class CampaignKind {
  public:
   virtual ~CampaignKind() = default;
@@ -76,14 +67,16 @@ class CampaignKind {
   /// feasible design).
   virtual void Summarise(const CampaignRunner& runner, long best, nlohmann::json* summary) = 0;
   virtual void WritePlots(const CampaignRunner& runner) const = 0;
-  /// Rank 0, unless quiet: the result lines on stdout.
-  virtual void PrintResult(const CampaignRunner& runner, long best, const nlohmann::json& summary) const = 0;
+  /// Rank 0: the result lines (what the command line prints on stdout), each ending in a newline.
+  virtual std::string ResultText(const CampaignRunner& runner, long best, const nlohmann::json& summary) const = 0;
 };
 
 /// The shared state and services of a running campaign, handed to its CampaignKind.
 class CampaignRunner {
  public:
-  const CampaignCliOptions& options() const { return options_; }
+  const CampaignRunOptions& options() const { return options_; }
+  /// The config's name in messages (its file, or the name of a config given as a tree).
+  const std::string& config_name() const { return spec_.Name(); }
   const LoadedCampaign& campaign() const { return campaign_; }
   const opt::CampaignDefinition& definition() const { return campaign_.config.definition; }
   opt::Evaluator& evaluator() const { return *campaign_.evaluator; }
@@ -93,6 +86,8 @@ class CampaignRunner {
   int rank() const { return rank_; }
   int size() const { return size_; }
 
+  /// Rank 0, unless quiet: one line for the caller's message callback (notes, warnings).
+  void Note(const std::string& line) const;
   /// Rank 0: takes the next evaluation in sequence order (logged unless it is replayed) and updates progress.
   void Add(const opt::EvaluationRecord& rec);
   /// The io::InputError for a log whose rows do not match what the campaign asks for now.
@@ -101,38 +96,39 @@ class CampaignRunner {
   /// One unit of work on its rank: evaluate, handing each record to sink in sequence order; returns what the
   /// unit reports (a JSON object, gathered on rank 0).
   using UnitWork = std::function<nlohmann::json(int unit, const opt::RecordSink& sink)>;
-  /// Collective: units 0..units-1 in rounds of MpiSize(), unit round·size + rank on each rank. With one
+  /// Collective: units 0..units-1 in rounds of size(), unit round·size + rank on each rank. With one
   /// process the records go straight to Add; with several they travel as log rows and rank 0 adds them after
   /// each round in unit order. Returns the units' reports on rank 0, in unit order (empty on other ranks).
   std::vector<nlohmann::json> Split(int units, const UnitWork& work);
 
  private:
-  friend void RunCampaign(CampaignKind& kind, const CampaignCliOptions& options);
-  CampaignRunner(CampaignKind& kind, const CampaignCliOptions& options);
+  friend CampaignResult RunKind(CampaignKind& kind, const CampaignSpec& spec, const CampaignRunOptions& options);
+  CampaignRunner(CampaignKind& kind, const CampaignSpec& spec, const CampaignRunOptions& options);
   void Start();
-  void Finish();
+  void Finish(CampaignResult* result);
+  void Progress(CampaignProgress::Stage stage) const;
+  CampaignResult Result(bool complete) const;
 
   CampaignKind& kind_;
   CampaignKind::Words words_;
-  CampaignCliOptions options_;
+  CampaignSpec spec_;
+  CampaignRunOptions options_;
+  const CampaignComm& comm_;
+  long total_ = 0;  ///< expected evaluations (progress)
   std::chrono::steady_clock::time_point wall0_;
   LoadedCampaign campaign_;
   int threads_ = 1, rank_ = 0, size_ = 1;
   std::unique_ptr<opt::ConstraintSet> constraints_;
   std::unique_ptr<CampaignJournal> journal_;
-  std::unique_ptr<Progress> progress_;
 };
 
-/// Runs one campaign of the given kind end to end (collective under MPI). Throws io::InputError for bad input.
-void RunCampaign(CampaignKind& kind, const CampaignCliOptions& options);
+/// Runs one campaign of the given kind end to end (collective). Throws io::InputError for bad input.
+CampaignResult RunKind(CampaignKind& kind, const CampaignSpec& spec, const CampaignRunOptions& options);
 
-/// Registers a campaign command, `hullopt NAME CONFIG --out DIR --threads N [more options] --quiet`; run(options)
-/// runs under the output folder's lock. more_options adds the command's own options (after --threads).
-CLI::App* AddCampaignCommand(CLI::App& app, const CommandText& text,
-                             std::function<void(const CampaignCliOptions&)> run,
-                             const std::function<void(CLI::App*)>& more_options = nullptr);
+/// Thrown by CampaignRunner::Add once max_evaluations are computed; RunKind returns the incomplete result.
+struct EvaluationLimitReached {};
 
 /// JSON object {names[i]: values[i]}.
 nlohmann::json NamedValues(const std::vector<std::string>& names, const std::vector<double>& values);
 
-}  // namespace hullopt::app
+}  // namespace hullopt::campaign

@@ -1,23 +1,18 @@
-#include "app/campaign_runner.h"
+#include "campaign/campaign_runner.h"
 
 #ifdef _OPENMP
 #include <omp.h>
 #endif
 
-#include <CLI/CLI.hpp>
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 
-#include "app/campaign_report.h"
-#include "app/campaign_setup.h"
-#include "app/mpi_context.h"
-#include "app/output_dir.h"
-#include "app/run_checks.h"
 #include "hullopt/version.h"
 #include "io/config/campaign_outputs.h"
+#include "io/config/output_folder.h"
 
-namespace hullopt::app {
+namespace hullopt::campaign {
 
 long CampaignKind::Resumed(const CampaignRunner& runner) const { return runner.journal().logged(); }
 
@@ -29,16 +24,36 @@ nlohmann::json NamedValues(const std::vector<std::string>& names, const std::vec
   return j;
 }
 
-CampaignRunner::CampaignRunner(CampaignKind& kind, const CampaignCliOptions& options)
+CampaignRunner::CampaignRunner(CampaignKind& kind, const CampaignSpec& spec, const CampaignRunOptions& options)
     : kind_(kind),
       words_(kind.Wording()),
+      spec_(spec),
       options_(options),
+      comm_(options.comm ? *options.comm : SerialComm()),
       wall0_(std::chrono::steady_clock::now()),
-      campaign_(LoadCampaign(options.config, kind.ConfigCommand())) {}
+      campaign_(LoadCampaign(spec)) {}
+
+void CampaignRunner::Note(const std::string& line) const {
+  if (rank_ == 0 && !options_.quiet && options_.message) options_.message(line);
+}
+
+void CampaignRunner::Progress(CampaignProgress::Stage stage) const {
+  if (rank_ != 0 || options_.quiet || !options_.progress) return;
+  CampaignProgress p;
+  p.stage = stage;
+  p.label = words_.command;
+  p.total = total_;
+  p.done = journal_ ? static_cast<long>(journal_->records().size()) : 0;
+  p.replayed = journal_ ? journal_->replayed() : 0;
+  options_.progress(p);
+}
 
 void CampaignRunner::Add(const opt::EvaluationRecord& rec) {
   journal_->Add(rec);
-  progress_->Update(static_cast<long>(journal_->records().size()), journal_->replayed());
+  Progress(CampaignProgress::Stage::kUpdate);
+  if (options_.max_evaluations > 0 &&
+      static_cast<long>(journal_->records().size()) - journal_->replayed() >= options_.max_evaluations)
+    throw EvaluationLimitReached{};
 }
 
 io::InputError CampaignRunner::ResumeError(const opt::ReplayMismatch& e) const {
@@ -63,7 +78,7 @@ std::vector<nlohmann::json> CampaignRunner::Split(int units, const UnitWork& wor
       j["rows"] = rows;
       payload = j.dump();
     }
-    const auto gathered = MpiGather(payload);
+    const auto gathered = comm_.Gather(payload);
     if (rank_ != 0) continue;
     for (const auto& p : gathered) {
       if (p.empty()) continue;
@@ -84,7 +99,7 @@ std::vector<nlohmann::json> CampaignRunner::Split(int units, const UnitWork& wor
 
 void CampaignRunner::Start() {
   const std::string& command = words_.command;
-  CheckOutputDirCommand(options_.out, command);
+  io::CheckOutputDirCommand(options_.out, command);
   kind_.CheckOptions();
   threads_ = ResolveThreads(options_.threads);
 #ifdef _OPENMP
@@ -92,32 +107,40 @@ void CampaignRunner::Start() {
   // thread), so --threads 1 is one core.
   omp_set_num_threads(threads_);
 #endif
-  rank_ = MpiRank();
-  size_ = MpiSize();
+  rank_ = comm_.Rank();
+  size_ = comm_.Size();
+  if (options_.max_evaluations > 0 && size_ > 1)
+    throw io::InputError(command + ": max_evaluations stops a campaign of one process only (" +
+                         std::to_string(size_) + " processes)");
   const CampaignSize size = kind_.Size(campaign_, threads_);
-  CheckCampaignCost(command, campaign_.resolved, campaign_.config.block, size.evaluations, size.count_key,
-                    size.parallel);
+  const std::string cost = CheckCampaignCost(command, campaign_.resolved, campaign_.config.block, size.evaluations,
+                                             size.count_key, size.parallel, options_.force);
+  if (rank_ == 0 && !cost.empty() && options_.message) options_.message(cost);
 
   const opt::CampaignDefinition& def = definition();
   opt::Evaluator& ev = evaluator();
   constraints_ = std::make_unique<opt::ConstraintSet>(def, ev.QuantityNames());
   io::HistoryLayout layout{def.VariableNames(), ev.SeaNames(), constraints_->ReportedQuantities()};
-  journal_ = std::make_unique<CampaignJournal>(options_.out, words_.log_file, layout, campaign_.config_hash,
+  journal_ = std::make_unique<CampaignJournal>(comm_, options_.out, words_.log_file, layout, campaign_.config_hash,
                                                campaign_.resolved, *constraints_, ev.QuantityNames().size());
+  if (!options_.resume && journal_->logged() > 0)
+    throw io::InputError(journal_->path() + ": holds " + std::to_string(journal_->logged()) + " " +
+                         words_.resumed + " of this campaign and resume is off: resume it, use another output "
+                         "folder, or delete the file to start over");
   journal_->Verify(ev, def);
-  progress_ = std::make_unique<Progress>(command, size.evaluations, rank_ == 0 && !options_.quiet);
+  total_ = size.evaluations;
+  Progress(CampaignProgress::Stage::kStart);
 
   // Nothing is written before the campaign is accepted; from then on every evaluation is logged.
-  const std::string problem = MpiBroadcast(kind_.Accept(*this));
+  const std::string problem = comm_.Broadcast(kind_.Accept(*this));
   if (!problem.empty()) throw io::InputError(problem);
-  if (rank_ == 0) PrepareOutputDir(options_.out, command, options_.config, campaign_.resolved);
+  if (rank_ == 0) io::PrepareOutputDir(options_.out, command, spec_.Name(), campaign_.resolved);
   journal_->StartWriting();
   const long resumed = kind_.Resumed(*this);
-  if (rank_ == 0 && !options_.quiet && resumed > 0) {
-    std::fprintf(
-        stderr, "%s: resuming: %ld %s in %s are replayed, not recomputed%s\n", command.c_str(), resumed,
-        words_.resumed.c_str(), journal_->path().c_str(),
-        journal_->truncated_tail() ? " (an incomplete last row from an interrupted run was discarded)" : "");
+  if (resumed > 0) {
+    Note(command + ": resuming: " + std::to_string(resumed) + " " + words_.resumed + " in " + journal_->path() +
+         " are replayed, not recomputed" +
+         (journal_->truncated_tail() ? " (an incomplete last row from an interrupted run was discarded)" : ""));
   }
 }
 
@@ -181,11 +204,11 @@ std::vector<std::string> ActiveSet(const opt::CampaignDefinition& def, const std
 
 }  // namespace
 
-void CampaignRunner::Finish() {
+void CampaignRunner::Finish(CampaignResult* result) {
   const std::string& command = words_.command;
   const opt::CampaignDefinition& def = definition();
   const auto& recs = journal_->records();
-  progress_->Finish(static_cast<long>(recs.size()), journal_->replayed());
+  Progress(CampaignProgress::Stage::kFinish);
   long best = -1;
   for (std::size_t i = 0; i < recs.size(); ++i) {
     if (recs[i].feasible && (best < 0 || recs[i].result.objective < recs[best].result.objective)) {
@@ -203,18 +226,20 @@ void CampaignRunner::Finish() {
   s["seed"] = def.seed;
   s["best_objective"] = best >= 0 ? nlohmann::json(recs[best].result.objective) : nlohmann::json();
   s["best_evaluation"] = best >= 0 ? nlohmann::json(best) : nlohmann::json();
-  ReportWarnings(recs, best, journal_->path(), options_.quiet, &s);
+  const std::string warnings_line = ReportWarnings(recs, best, journal_->path(), &s);
+  if (!warnings_line.empty()) Note(warnings_line);
   const std::string resolution_warning =
-      best >= 0 ? CheckBestResolution(campaign_, recs[best].x, best, options_.quiet, &s) : std::string();
+      best >= 0 ? CheckBestResolution(campaign_, recs[best].x, best, &s) : std::string();
+  if (!resolution_warning.empty()) Note("hullopt: warning: " + resolution_warning);
   kind_.Summarise(*this, best, &s);
   s["wall_time_s"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0_).count();
-  io::WriteJson(OutPath(options_.out, "summary.json"), s);
+  io::WriteJson(io::OutPath(options_.out, "summary.json"), s);
   if (best >= 0) {
     char comment[200];
     std::snprintf(comment, sizeof comment, "hullopt %s: %s of %s (evaluation %ld, objective %.10g); %s",
-                  command.c_str(), words_.best.c_str(), options_.config.c_str(), best,
+                  command.c_str(), words_.best.c_str(), spec_.Name().c_str(), best,
                   recs[best].result.objective, words_.best_base.c_str());
-    io::WriteBestYaml(OutPath(options_.out, "best.yaml"), campaign_.raw, campaign_.config.block,
+    io::WriteBestYaml(io::OutPath(options_.out, "best.yaml"), campaign_.raw, campaign_.config.block,
                       def.VariableNames(), campaign_.config.start_source, recs[best].x,
                       resolution_warning.empty() ? std::string(comment)
                                                  : std::string(comment) + "\n# WARNING: " + resolution_warning);
@@ -231,38 +256,50 @@ void CampaignRunner::Finish() {
     if (command == "optimize")
       active_set = ActiveSet(def, campaign_.evaluator->QuantityNames(), recs[best], campaign_.evaluator.get());
     // The figures after the numbers (summary.json, best.yaml): the report shows them.
-    if (!options_.no_plots) {
+    if (options_.plots) {
       kind_.WritePlots(*this);
-      WriteCampaignReport(options_.out, command, options_.config, campaign_warnings, active_set);
+      if (options_.write_report && !spec_.config_file.empty())
+        options_.write_report({options_.out, command, spec_.config_file, campaign_warnings, active_set});
     }
-  } else if (!options_.no_plots) {
+  } else if (options_.plots) {
     kind_.WritePlots(*this);
   }
-  if (!options_.quiet) kind_.PrintResult(*this, best, s);
+  *result = Result(true);
+  result->summary = s;
+  result->text = kind_.ResultText(*this, best, s);
 }
 
-CLI::App* AddCampaignCommand(CLI::App& app, const CommandText& text,
-                             std::function<void(const CampaignCliOptions&)> run,
-                             const std::function<void(CLI::App*)>& more_options) {
-  auto o = std::make_shared<CampaignCliOptions>();
-  auto* cmd = AddConfigCommand(app, text, [o, run = std::move(run)](const std::string& config, const std::string& out) {
-    CampaignCliOptions one = *o;
-    one.config = config;
-    one.out = out;
-    run(one);
-  });
-  cmd->add_option("--threads", o->threads, "OpenMP threads per process (0 = OpenMP default)");
-  if (more_options) more_options(cmd);
-  cmd->add_flag("--quiet", o->quiet, "no progress output");
-  cmd->add_flag("--no-plots", o->no_plots, "write the numbers only: no SVG figures and no report.html");
-  return cmd;
+CampaignResult CampaignRunner::Result(bool complete) const {
+  CampaignResult r;
+  r.complete = complete;
+  r.command = words_.command;
+  r.log_path = journal_->path();
+  r.layout = journal_->layout();
+  r.history = journal_->records();
+  r.replayed = journal_->replayed();
+  for (std::size_t i = 0; i < r.history.size(); ++i) {
+    const opt::EvaluationRecord& rec = r.history[i];
+    r.reported.push_back(rec.result.produced ? constraints_->ReportedValues(rec.result)
+                                             : std::vector<double>(r.layout.quantities.size(), NAN));
+    if (rec.feasible && (r.best < 0 || rec.result.objective < r.history[r.best].result.objective))
+      r.best = static_cast<long>(i);
+  }
+  return r;
 }
 
-void RunCampaign(CampaignKind& kind, const CampaignCliOptions& options) {
-  CampaignRunner runner(kind, options);
+CampaignResult RunKind(CampaignKind& kind, const CampaignSpec& spec, const CampaignRunOptions& options) {
+  std::string error;
+  if (!options.IsValid(&error)) throw io::InputError(error);
+  CampaignRunner runner(kind, spec, options);
   runner.Start();
-  kind.Run(runner);
-  if (runner.rank() == 0) runner.Finish();
+  try {
+    kind.Run(runner);
+  } catch (const EvaluationLimitReached&) {
+    return runner.Result(false);
+  }
+  CampaignResult result;
+  if (runner.rank() == 0) runner.Finish(&result);
+  return result;
 }
 
-}  // namespace hullopt::app
+}  // namespace hullopt::campaign
