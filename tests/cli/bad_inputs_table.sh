@@ -497,6 +497,24 @@ w head_tds "$HD
 solver: { method: time_domain_strip, sections: 10, panels: 6, headings_deg: [180, 90], frequencies: { lambda_over_L: [1.0, 2.0] } }"
 DESC='`solver.headings_deg` with `method: time_domain_strip`'
 run head_tds 1 "applies to method: strip_theory_stf only" - -- rao "$T/head_tds.yaml" --out "$T/o92"
+# Viscous roll damping (solver.roll_damping, rao with headings): an unknown model, the keys without headings, an
+# amplitude beyond the linearisation, and a hull the model does not cover (flagged in every output).
+w roll_model "$HD
+solver: { method: strip_theory_stf, sections: 10, panels: 6, headings_deg: [90], roll_damping: viscous, frequencies: { lambda_over_L: [1.0, 2.0] } }"
+DESC='`solver.roll_damping: viscous`'
+run roll_model 1 "key 'solver.roll_damping'" - -- rao "$T/roll_model.yaml" --out "$T/o93"
+w roll_nohead "$HD
+solver: { method: strip_theory_stf, sections: 10, panels: 6, roll_damping: ikeda, frequencies: { lambda_over_L: [1.0, 2.0] } }"
+DESC='`solver.roll_damping` without `solver.headings_deg`'
+run roll_nohead 1 "applies with solver.headings_deg only" - -- rao "$T/roll_nohead.yaml" --out "$T/o94"
+w roll_amp "$HD
+solver: { method: strip_theory_stf, sections: 10, panels: 6, headings_deg: [90], roll_amplitude_deg: 45, frequencies: { lambda_over_L: [1.0, 2.0] } }"
+DESC='`solver.roll_amplitude_deg: 45`'
+run roll_amp 1 "key 'solver.roll_amplitude_deg'" - -- rao "$T/roll_amp.yaml" --out "$T/o95"
+w roll_cat "$HD
+solver: { method: strip_theory_stf, sections: 10, panels: 6, headings_deg: [90], frequencies: { lambda_over_L: [1.0, 2.0] } }"
+DESC='roll damping of the Delft 372 catamaran (warning case: Ikeda does not cover a demihull pair)'
+run roll_cat 0 "do not cover a demihull pair" "{T}/o96/rao.csv" -- rao "$T/roll_cat.yaml" --out "$T/o96"
 
 # Not a row: without a mass block, hydrostatics.json's KG is the documented default, the draught.
 w nomass "hull: { parametric: { $P } }"
