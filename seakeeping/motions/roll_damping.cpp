@@ -119,7 +119,9 @@ double KatoFrictionRollDamping(const RollDampingHull& h, double w, const RollDam
   return 4.0 / (3.0 * M_PI) * o.rho_kg_m3 * sf * rf * rf * rf * phi * w * cf;
 }
 
-double KawaharaEddyCoefficient(const RollDampingHull& h) {
+namespace {
+// Kawahara et al.'s C_R fit as it stands (negative outside its range for some hulls).
+double RawEddyCoefficient(const RollDampingHull& h) {
   const double cb = h.block_coefficient, cm = h.midship_coefficient, bd = h.breadth_m / h.draught_m;
   const double ogd = h.og_m / h.draught_m;
   const double fe1 = (-0.0182 * cb + 0.0155) * std::pow(bd - 1.8, 3);
@@ -128,9 +130,14 @@ double KawaharaEddyCoefficient(const RollDampingHull& h) {
                      ((0.9717 * cb * cb - 1.55 * cb + 0.723) * ogd + 0.04567 * cb + 0.9408);
   const double be2 = (0.25 * ogd + 0.95) * ogd - 219.2 * std::pow(cb, 3) + 443.7 * cb * cb - 283.3 * cb + 59.6;
   const double be3 = -15.0 * cb * bd + 46.5 * cb + 11.2 * bd - 28.6;
+  return (fe1 + fe2) * std::exp(be1 + be2 * std::pow(cm, be3));
+}
+}  // namespace
+
+double KawaharaEddyCoefficient(const RollDampingHull& h) {
   // Outside the fitted range the fit can turn negative (e.g. Cb < 0.45): no eddy damping then (flagged by
   // RollDampingRangeFlags), never a negative damping.
-  return std::max(0.0, (fe1 + fe2) * std::exp(be1 + be2 * std::pow(cm, be3)));
+  return std::max(0.0, RawEddyCoefficient(h));
 }
 
 RollDampingComponents ViscousRollDamping(const RollDampingHull& h, double w, double speed_m_s,
@@ -188,6 +195,12 @@ std::vector<std::string> RollDampingRangeFlags(const RollDampingHull& h, double 
     Range(out, "bilge keel l/L", h.bilge_keel_length_m / h.length_m, 0.05, 0.4);
   }
   Range(out, "omega_hat = omega sqrt(B/2g)", max_omega * std::sqrt(h.breadth_m / (2.0 * o.g_m_s2)), 0.0, 1.0);
+  if (const double cr = RawEddyCoefficient(h); cr < 0.0) {
+    std::ostringstream os;
+    os << "roll damping (Ikeda, Kawahara et al. 2009): the eddy-making fit gives C_R = " << cr
+       << " < 0 for this hull: its eddy damping is taken as 0";
+    out.push_back(os.str());
+  }
   return out;
 }
 

@@ -97,12 +97,13 @@ double KawaharaEddyCoefficient(const RollDampingHull& hull);
 RollDampingComponents ViscousRollDamping(const RollDampingHull& hull, double omega_rad_s, double speed_m_s,
                                          const RollDampingOptions& o);
 
-/// Where the hull (and the highest frequency to be solved, as ω̂ = ω √(B/(2g))) lies outside the range the
-/// method was fitted in (Kawahara et al.: Cb 0.5-0.85, B/d 2.5-4.5, OG/d −1.5-0.2, Cm 0.9-0.99, bilge keels
-/// b/B 0.01-0.06 and l/L 0.05-0.4, ω̂ <= 1), one sentence per parameter naming it, its value and the range;
-/// for a multihull, that Ikeda's range does not cover a demihull pair and what is used instead (and, at zero
-/// speed or Cs = 0, that its viscous roll damping is zero). Empty: inside. model kNone: empty.
-std::vector<std::string> RollDampingRangeFlags(const RollDampingHull& hull, double max_omega_rad_s,
+/// Where the hull (and ω, the roll natural frequency where the damping decides the response, as ω̂ =
+/// ω √(B/(2g))) lies outside the range the method was fitted in (Kawahara et al.: Cb 0.5-0.85, B/d 2.5-4.5,
+/// OG/d −1.5-0.2, Cm 0.9-0.99, bilge keels b/B 0.01-0.06 and l/L 0.05-0.4, ω̂ <= 1), one sentence per parameter
+/// naming it, its value and the range, and where Kawahara's eddy fit turns negative, that the eddy damping is
+/// taken as 0; for a multihull, that Ikeda's range does not cover a demihull pair and what is used instead
+/// (and, at zero speed or Cs = 0, that its viscous roll damping is zero). Empty: inside. model kNone: empty.
+std::vector<std::string> RollDampingRangeFlags(const RollDampingHull& hull, double omega_rad_s,
                                                double speed_m_s, const RollDampingOptions& o);
 
 }  // namespace hullopt::sk

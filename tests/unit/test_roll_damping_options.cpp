@@ -80,11 +80,15 @@ TEST_CASE("roll damping: the range check names each parameter outside the publis
   CHECK(sk::RollDampingRangeFlags(InRange(), 0.5 * w_hat_one, 5.0, o).empty());
   CHECK(sk::RollDampingRangeFlags(InRange(), 0.5 * w_hat_one, 5.0, sk::RollDampingOptions{}).empty());  // model none
   sk::RollDampingHull h = InRange();
-  h.block_coefficient = 0.45;
+  h.block_coefficient = 0.40;
   h.midship_coefficient = 0.8;
   auto flags = sk::RollDampingRangeFlags(h, 1.2 * w_hat_one, 5.0, o);
-  REQUIRE(flags.size() == 3);
-  CHECK(Contains(flags, "Cb = 0.45 is outside the range [0.5, 0.85]"));
+  REQUIRE(flags.size() == 4);
+  // Kawahara's fit at Cb 0.40, B/d 3.125: A_E = f_E1 + f_E2 = 0.0191 − 0.0600 < 0 (by hand): no eddy damping,
+  // and said so.
+  CHECK(Contains(flags, "its eddy damping is taken as 0"));
+  CHECK(sk::KawaharaEddyCoefficient(h) == 0.0);
+  CHECK(Contains(flags, "Cb = 0.4 is outside the range [0.5, 0.85]"));
   CHECK(Contains(flags, "Cm = 0.8 is outside the range [0.9, 0.99]"));
   CHECK(Contains(flags, "omega_hat"));
   h = InRange();
