@@ -8,7 +8,7 @@
 // prediction formula of roll damping of conventional cargo ships on the basis of Ikeda's method and its
 // limitation", Contemporary Ideas on Ship Stability and Capsizing in Waves, pp. 465-486; their program
 // Roll_Damping.for, 2009). Components (docs/theory.md, "Viscous roll damping"):
-//  - hull skin friction, Kato (1958) laminar form with Ikeda's speed factor 1 + 4.1 U/(ωL);
+//  - hull skin friction, Kato (1957) laminar form with Ikeda's speed factor 1 + 4.1 U/(ωL);
 //  - eddy making of the naked hull, Kawahara's C_R fit with Ikeda's speed reduction (0.04K)²/(1 + (0.04K)²),
 //    K = ωL/U;
 //  - hull lift at forward speed (Ikeda; Himeno 1981 eq. for B_L);

@@ -515,6 +515,12 @@ w roll_cat "$HD
 solver: { method: strip_theory_stf, sections: 10, panels: 6, headings_deg: [90], frequencies: { lambda_over_L: [1.0, 2.0] } }"
 DESC='roll damping of the Delft 372 catamaran (warning case: Ikeda does not cover a demihull pair)'
 run roll_cat 0 "do not cover a demihull pair" "{T}/o96/rao.csv" -- rao "$T/roll_cat.yaml" --out "$T/o96"
+w roll_mono "hull: { parametric: { type: monohull, section_style: round_bilge, displacement_t: 1000, L_over_B: 11.9, B_over_T: 4.51, Cb: 0.39, Cp: 0.60, Cwp: 0.66, LCB_pct_L: -9.6, LCF_pct_L: -15.5, transom_immersion: 0.3, transom_beam_ratio: 1.0, keel_rise: 0.3 } }
+mass: { kg_m: 4.0 }
+speed: { kn: 40 }
+solver: { method: strip_theory_stf, sections: 10, panels: 6, headings_deg: [90], frequencies: { lambda_over_L: [1.0, 2.0] } }"
+DESC='roll damping of the Table 1 monohull MONa (warning case: Cb 0.39, Cm 0.65 outside Ikeda'"'"'s fitted range)'
+run roll_mono 0 "Cb = 0.39 is outside the range [0.5, 0.85]" "{T}/o97/rao.csv" -- rao "$T/roll_mono.yaml" --out "$T/o97"
 
 # Not a row: without a mass block, hydrostatics.json's KG is the documented default, the draught.
 w nomass "hull: { parametric: { $P } }"
