@@ -43,15 +43,62 @@ double HalfOverallBeam(const hull::HullForm& hull) {
   return b;
 }
 
-// What solver.headings_deg and its mass keys give: the headings and the roll radius of gyration.
+// What solver.headings_deg and its mass keys give: the headings, the roll radius of gyration and the viscous
+// roll damping (solver.roll_damping, solver.roll_amplitude_deg).
 struct HeadingRequest {
   std::vector<double> headings_deg;
   double kxx_m = 0.0;
+  bool roll_damping = false;
+  double roll_amplitude_deg = 5.0;
+  double cs = 0.0;
 };
+
+// The hull particulars of the viscous roll damping: L, B, d, Cb, Cm of one hull (hydrostatics at rest), OG =
+// the CG below the waterline; for a multihull every physical body's |y| and waterplane area (a mirror pair
+// twice).
+sk::RollDampingHull RollDampingHullOf(const hull::HullForm& hull, const hull::Hydrostatics& hs, double og_m,
+                                      double rho_kg_m3) {
+  sk::RollDampingHull h;
+  h.length_m = hs.L_m;
+  h.breadth_m = hs.B_m;
+  h.draught_m = hs.T_m;
+  h.block_coefficient = hs.Cb;
+  h.midship_coefficient = hs.Cm;
+  h.og_m = og_m;
+  if (hull.BodyCount() > 1)
+    for (const auto& body : hull.bodies) {
+      hull::HullForm one = hull;
+      one.type = "monohull";
+      one.bodies = {body};
+      one.bodies[0].y_centre_m = 0.0;
+      const double awp = hull::ComputeHydrostatics(one, rho_kg_m3).awp_m2;
+      for (int side = 0; side < (body.y_centre_m > 0.0 ? 2 : 1); ++side) {
+        h.body_offset_m.push_back(body.y_centre_m);
+        h.body_waterplane_m2.push_back(awp);
+      }
+    }
+  return h;
+}
+
+// The roll natural frequency among the solved ones: where ω² (I44 + A44(ω)) − C44 is closest to zero (0 when
+// the hull has no positive roll stiffness).
+double RollNaturalFrequency(const sk::ObliqueStripResult& r) {
+  const double c44 = r.restoring(3, 3);
+  double best = 0.0, miss = 0.0;
+  if (!(c44 > 0.0)) return 0.0;
+  for (const auto& f : r.frequencies) {
+    const double m = std::fabs(f.omega_rad_s * f.omega_rad_s * (r.mass(3, 3) + f.added_mass(3, 3)) - c44);
+    if (best == 0.0 || m < miss) {
+      best = f.omega_rad_s;
+      miss = m;
+    }
+  }
+  return best;
+}
 
 // The RAOs of every heading by the oblique-sea strip theory (sk::SolveObliqueStripTheory) on the strips'
 // own stations, written as rao.csv with a heading column. Yaw's radius of gyration is taken as pitch's.
-void WriteObliqueRaos(const HeadingRequest& req, const sk::StripKernel& geometry,
+void WriteObliqueRaos(const HeadingRequest& req, const sk::StripKernel& geometry, const hull::HullForm& hull,
                       const hull::MassProperties& mass, const hull::Hydrostatics& hs, double draught_m,
                       double U, const io::WaterOptions& water, const std::vector<double>& omega,
                       const std::string& hull_name, std::vector<std::string> notes,
@@ -69,7 +116,14 @@ void WriteObliqueRaos(const HeadingRequest& req, const sk::StripKernel& geometry
   o.rho_kg_m3 = water.rho_kg_m3;
   o.g_m_s2 = water.g_m_s2;
   o.speed_m_s = U;
+  if (req.roll_damping) {
+    o.roll_damping.model = sk::RollDampingModel::kIkeda;
+    o.roll_damping.roll_amplitude_rad = req.roll_amplitude_deg * M_PI / 180.0;
+    o.roll_damping.damping_cs = req.cs;
+    o.roll_damping_hull = RollDampingHullOf(hull, hs, -m.z_g_m, water.rho_kg_m3);
+  }
   sk::ObliqueStripResult r;
+  int roll_flags = 0;
   try {
     r = sk::SolveObliqueStripTheory(stations, m, omega, req.headings_deg, o);
   } catch (const std::domain_error& e) {
@@ -77,19 +131,52 @@ void WriteObliqueRaos(const HeadingRequest& req, const sk::StripKernel& geometry
   } catch (const std::invalid_argument& e) {
     throw io::InputError(std::string("cannot compute RAOs: ") + e.what());
   }
+  // The viscous roll damping: what was used, its size at the roll resonance, and where the hull lies outside
+  // the method's range (a warning in every output).
+  std::ostringstream rd;
+  const double wn = RollNaturalFrequency(r);
+  if (!req.roll_damping) {
+    rd << "roll damping: potential only (solver.roll_damping: none): roll near its resonance is too large";
+  } else {
+    rd << "roll damping: ";
+    if (o.roll_damping_hull.Multihull())
+      rd << "the demihulls' Cs heave damping at their offsets (B44 += sum y_i^2 0.5 Cs rho U A_wp,i, Cs = " << req.cs
+         << ")";
+    else
+      rd << "Ikeda's components (Kawahara, Maekawa & Ikeda 2009: skin friction, eddy making, hull lift; no bilge "
+            "keels)";
+    rd << " added to the potential B44, linearised at a roll amplitude of " << req.roll_amplitude_deg << " deg";
+    if (wn > 0.0) {
+      for (const auto& w : r.waves)
+        if (w.omega_e_rad_s == wn) {
+          rd << "; at the roll natural frequency " << wn << " rad/s viscous B44 " << w.viscous_roll_damping
+             << " N m s, potential " << w.damping(3, 3) << " N m s";
+          break;
+        }
+    }
+    for (const auto& f : sk::RollDampingRangeFlags(o.roll_damping_hull, wn, U, o.roll_damping)) {
+      std::fprintf(stderr, "hullopt: warning: hull '%s': %s\n", hull_name.c_str(), f.c_str());
+      notes.push_back("warning: " + f);
+      ++roll_flags;
+    }
+  }
   std::ostringstream os;
   os << "oblique-sea strip theory (STF) at " << req.headings_deg.size()
-     << " headings: no Cs damping, roll with potential damping only (no viscous roll damping), kxx = "
-     << req.kxx_m << " m, kzz = kyy, the given frequencies (no adaptive refinement)";
+     << " headings: no Cs damping in heave and pitch, kxx = " << req.kxx_m
+     << " m, kzz = kyy, the given frequencies (no adaptive refinement)";
   notes.push_back(os.str());
+  notes.push_back(rd.str());
   try {
     io::WriteObliqueRaoCsv(OutPath(out_dir, "rao.csv"), r, U, water.g_m_s2, hs.L_m, notes);
   } catch (const std::domain_error& e) {
     throw io::InputError(std::string("hull '") + hull_name + "': " + e.what());
   }
-  Say("hull '%s': RAOs of sway, heave, roll, pitch and yaw at %zu headings x %zu frequencies; wrote rao.csv "
-      "in %s\n",
-      hull_name.c_str(), req.headings_deg.size(), omega.size(), out_dir.c_str());
+  Say("hull '%s': RAOs of sway, heave, roll, pitch and yaw at %zu headings x %zu frequencies; roll damping %s%s; "
+      "wrote rao.csv in %s\n",
+      hull_name.c_str(), req.headings_deg.size(), omega.size(),
+      !req.roll_damping ? "potential only" : o.roll_damping_hull.Multihull() ? "demihull Cs" : "Ikeda",
+      roll_flags ? (" (" + std::to_string(roll_flags) + " warning(s): outside its range)").c_str() : "",
+      out_dir.c_str());
 }
 
 void RunRao(const std::string& config_file, const std::string& out_dir) {
@@ -124,6 +211,9 @@ void RunRao(const std::string& config_file, const std::string& out_dir) {
   headings.headings_deg = parsed.headings_deg;
   const bool oblique = !headings.headings_deg.empty();
   if (oblique) headings.kxx_m = parsed.kxx_m ? *parsed.kxx_m : 0.35 * 2.0 * HalfOverallBeam(hull);
+  headings.roll_damping = parsed.roll_damping == "ikeda";
+  headings.roll_amplitude_deg = parsed.roll_amplitude_deg;
+  headings.cs = sc.cs();
   std::optional<io::MeasuredRao> measured;
   if (compare)
     measured = io::ReadRaoComparison(*compare, U / std::sqrt(water.g_m_s2 * hs.L_m), hs.L_m, water.g_m_s2);
@@ -157,7 +247,7 @@ void RunRao(const std::string& config_file, const std::string& out_dir) {
     notes.push_back(fn.str());
     for (const auto& a : hull.adjustments) notes.push_back("adjusted: " + a);
     for (const auto& w : input_warnings) notes.push_back("warning: " + w);
-    WriteObliqueRaos(headings, geometry, mass, hs, running.draught_m, U, water, omega, hull_name, notes,
+    WriteObliqueRaos(headings, geometry, hull, mass, hs, running.draught_m, U, water, omega, hull_name, notes,
                      out_dir);
     return;
   }

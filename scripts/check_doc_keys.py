@@ -62,7 +62,7 @@ for _c in ("rao", "coefficients", "evaluate", "optimize", "explore", "calibrate"
                                                               "solver.adaptive_grid_max_passes",
                                                               "solver.adaptive_grid_max_frequencies"]
 # rao's oblique-sea keys, read only with solver.headings_deg.
-READ_WHEN_PRESENT["rao"] += ["solver.headings_deg", "mass.kxx_m"]
+READ_WHEN_PRESENT["rao"] += ["solver.headings_deg", "mass.kxx_m", "solver.roll_damping", "solver.roll_amplitude_deg"]
 
 
 # Keys that once appeared in the documentation and that every command refuses.

@@ -29,6 +29,7 @@ mass: { kg_m: 4.0 }
 solver:
   method: strip_theory_stf
   headings_deg: [%s]
+  roll_damping: none
   frequencies: { range: { quantity: lambda_over_L, from: 0.4, to: 4.0, count: 60 } }
 """ % ", ".join(str(h) for h in HEADINGS)
     with tempfile.TemporaryDirectory() as tmp:

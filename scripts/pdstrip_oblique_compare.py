@@ -82,6 +82,7 @@ solver:
   sections: 40
   panels: 14
   headings_deg: [{', '.join(f'{h:g}' for h in HEADINGS)}]
+  roll_damping: none
   frequencies: {{ lambda_over_L: [{', '.join(f'{x:.6f}' for x in lams)}] }}
 """)
         out = os.path.join(tmp, "h")

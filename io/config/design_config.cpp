@@ -47,6 +47,20 @@ ParsedDesign ParseDesign(YamlMap& root, const std::string& config_file, const st
           sm.Fail("headings_deg", os.str());
         }
     }
+    if (o.headings) {  // viscous roll damping: read with headings (its default then recorded), refused without
+      const char* given = sm.Has("roll_damping") ? "roll_damping"
+                          : sm.Has("roll_amplitude_deg") ? "roll_amplitude_deg"
+                                                         : nullptr;
+      if (!p.headings_deg.empty() || given) {
+        p.roll_damping = sm.Choice("roll_damping", {"ikeda", "none"}, "ikeda");
+        p.roll_amplitude_deg = sm.Number("roll_amplitude_deg", 5.0);
+        if (!(p.roll_amplitude_deg > 0.0 && p.roll_amplitude_deg <= 28.0))
+          sm.Fail("roll_amplitude_deg", "must lie in (0, 28] deg (the quadratic damping is linearised at this roll "
+                                        "amplitude; 5 deg is the default)");
+        if (p.headings_deg.empty())
+          sm.Fail(given, "applies with solver.headings_deg only (roll is solved in oblique seas)");
+      }
+    }
     // Evaluations in seas choose their own frequency grid, so solver.frequencies is optional there.
     s.solver = ParseSolverConfig(sm, o.frequencies_required);
     if (!p.headings_deg.empty() && s.solver.rao.method != sk::RaoSolverOptions::Method::kStripTheory)

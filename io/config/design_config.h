@@ -39,6 +39,9 @@ struct ParsedDesign {
   /// caller's default from the hull).
   std::vector<double> headings_deg;
   std::optional<double> kxx_m;
+  /// With headings: solver.roll_damping (ikeda | none, default ikeda) and solver.roll_amplitude_deg (default 5).
+  std::string roll_damping = "none";
+  double roll_amplitude_deg = 5.0;
 };
 
 /// What a command reads of a design besides the common blocks.

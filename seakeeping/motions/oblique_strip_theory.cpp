@@ -107,6 +107,10 @@ bool ObliqueStripOptions::IsValid(std::string* error) const {
     os << "speed_m_s = " << speed_m_s << " must be finite";
   else if (!section.IsValid(&section_error))
     os << "section: " << section_error;
+  else if (roll_damping.model != RollDampingModel::kNone && !roll_damping.IsValid(&section_error))
+    os << "roll_damping: " << section_error;
+  else if (roll_damping.model != RollDampingModel::kNone && !roll_damping_hull.IsValid(&section_error))
+    os << "roll_damping_hull: " << section_error;
   if (os.str().empty()) return true;
   if (error) *error = os.str();
   return false;
@@ -249,10 +253,20 @@ void SolveWave(const Eigen::PartialPivLU<Eigen::MatrixXcd>& lu, double k, Obliqu
   for (int d = 1; d < 6; ++d) wr.rao[d] = d >= 3 ? x[d - 1] / k : x[d - 1];
 }
 
+// The viscous roll damping (options.roll_damping) at encounter frequency we: its equivalent linear B44.
+double ViscousRollB44(const ObliqueStripOptions& options, double we) {
+  if (options.roll_damping.model == RollDampingModel::kNone) return 0.0;
+  RollDampingOptions r = options.roll_damping;
+  r.rho_kg_m3 = options.rho_kg_m3;
+  r.g_m_s2 = options.g_m_s2;
+  return ViscousRollDamping(options.roll_damping_hull, we, options.speed_m_s, r).equivalent;
+}
+
 Eigen::PartialPivLU<Eigen::MatrixXcd> MotionMatrix(double we, const Matrix6d& mass,
-                                                   const Matrix6d& added_mass, const Matrix6d& damping,
-                                                   const Matrix6d& restoring) {
-  // The 5-dof equations (sway..yaw): [−ω_e²(M + A) + iω_e B + C] X = F.
+                                                   const Matrix6d& added_mass, Matrix6d damping,
+                                                   const Matrix6d& restoring, double viscous_b44) {
+  // The 5-dof equations (sway..yaw): [−ω_e²(M + A) + iω_e B + C] X = F, B with the viscous roll damping.
+  if (viscous_b44 != 0.0) damping(3, 3) += viscous_b44;
   const Eigen::MatrixXcd z =
       (-we * we * (mass + added_mass)).cast<C>() + C(0.0, we) * damping.cast<C>() + restoring.cast<C>();
   return Eigen::PartialPivLU<Eigen::MatrixXcd>(z.bottomRightCorner(5, 5));
@@ -361,7 +375,9 @@ void SolveAtSpeed(const std::vector<ObliqueStripStation>& stations, const std::v
       }
       wr.added_mass = force.real() / (we * we);
       wr.damping = -force.imag() / we;
-      SolveWave(MotionMatrix(we, out.mass, wr.added_mass, wr.damping, out.restoring), k, wr);
+      wr.viscous_roll_damping = ViscousRollB44(options, we);
+      SolveWave(MotionMatrix(we, out.mass, wr.added_mass, wr.damping, out.restoring, wr.viscous_roll_damping),
+                k, wr);
     }
 }
 
@@ -416,7 +432,8 @@ ObliqueStripResult SolveObliqueStripTheory(const std::vector<ObliqueStripStation
     const ObliqueFrequencyResult& fr = out.frequencies.emplace_back(
         FrequencyCoefficients(stations, wet, hydro, f * ns, omegas[f], g, mass.x_g_m, zg));
     const double w = omegas[f], k = fr.k_per_m;
-    const auto lu = MotionMatrix(w, out.mass, fr.added_mass, fr.damping, out.restoring);
+    const double viscous_b44 = ViscousRollB44(options, w);
+    const auto lu = MotionMatrix(w, out.mass, fr.added_mass, fr.damping, out.restoring, viscous_b44);
     for (std::size_t hd = 0; hd < nh; ++hd) {
       ObliqueWaveResult& wr = out.waves[hd * nf + f];
       const double beta = headings_deg[hd] * M_PI / 180.0;
@@ -426,6 +443,7 @@ ObliqueStripResult SolveObliqueStripTheory(const std::vector<ObliqueStripStation
       wr.frequency_entry = static_cast<std::size_t>(f);
       wr.added_mass = fr.added_mass;
       wr.damping = fr.damping;
+      wr.viscous_roll_damping = viscous_b44;
       for (int s = 0; s < ns; ++s) {
         // The section's loads moved to the wave phase at the section's x.
         const SectionLoadsAboutCg l = LoadsAboutCg(hydro[f * ns + s], k, beta, rho, g, zg);

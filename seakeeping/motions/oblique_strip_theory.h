@@ -19,8 +19,9 @@
 //
 // Not included (hooks): surge (its row and column stay zero and its RAO is not solved, so the surge–pitch
 // coupling A15, B15 is left out: on the slender Wigley hull the pitch RAO still agrees within 3.4 % with a
-// free-surge 3D solve), viscous roll damping (add it to B(3,3) before solving: roll, at any speed, has potential
-// damping only), encounter frequencies <= 0 (following and quartering seas at speed: refused).
+// free-surge 3D solve), encounter frequencies <= 0 (following and quartering seas at speed: refused). Roll has
+// potential damping only unless ObliqueStripOptions::roll_damping names a viscous model (roll_damping.h), whose
+// equivalent linear B44 at each encounter frequency is added to B(3,3) before solving.
 #include <Eigen/Dense>
 #include <array>
 #include <complex>
@@ -30,6 +31,7 @@
 
 #include "parametric_hull/hull_form.h"
 #include "seakeeping/green/panel.h"
+#include "seakeeping/motions/roll_damping.h"
 #include "seakeeping/sections/frequency_domain_section.h"
 #include "seakeeping/strip/strip_geometry.h"
 
@@ -78,6 +80,11 @@ struct ObliqueStripOptions {
   bool longitudinal_froude_krylov = true;
   /// Settings of the 2D section solver (its rho and g are replaced by the two above).
   FrequencyDomainOptions section;
+  /// Viscous roll damping (roll_damping.h; its rho and g are replaced by the two above) of the hull described
+  /// by roll_damping_hull, at each encounter frequency and the speed above. model kNone (the default): none,
+  /// every result bitwise as without these fields.
+  RollDampingOptions roll_damping;
+  RollDampingHull roll_damping_hull;
   bool IsValid(std::string* error) const;
 };
 
@@ -128,6 +135,7 @@ struct ObliqueWaveResult {
   std::size_t frequency_entry = 0;  ///< ObliqueStripResult::frequencies entry of its sections' ω_e
   Matrix6d added_mass = Matrix6d::Zero();  ///< A_jk at ω_e with the speed terms (U = 0: the entry's)
   Matrix6d damping = Matrix6d::Zero();     ///< B_jk likewise (potential damping only)
+  double viscous_roll_damping = 0.0;       ///< [N m s] the viscous B44 added to damping(3, 3) in the solve
   std::array<std::complex<double>, 6> froude_krylov{};
   std::array<std::complex<double>, 6> diffraction{};
   std::array<std::complex<double>, 6> excitation{};

@@ -497,6 +497,30 @@ w head_tds "$HD
 solver: { method: time_domain_strip, sections: 10, panels: 6, headings_deg: [180, 90], frequencies: { lambda_over_L: [1.0, 2.0] } }"
 DESC='`solver.headings_deg` with `method: time_domain_strip`'
 run head_tds 1 "applies to method: strip_theory_stf only" - -- rao "$T/head_tds.yaml" --out "$T/o92"
+# Viscous roll damping (solver.roll_damping, rao with headings): an unknown model, the keys without headings, an
+# amplitude beyond the linearisation, and a hull the model does not cover (flagged in every output).
+w roll_model "$HD
+solver: { method: strip_theory_stf, sections: 10, panels: 6, headings_deg: [90], roll_damping: viscous, frequencies: { lambda_over_L: [1.0, 2.0] } }"
+DESC='`solver.roll_damping: viscous`'
+run roll_model 1 "key 'solver.roll_damping'" - -- rao "$T/roll_model.yaml" --out "$T/o93"
+w roll_nohead "$HD
+solver: { method: strip_theory_stf, sections: 10, panels: 6, roll_damping: ikeda, frequencies: { lambda_over_L: [1.0, 2.0] } }"
+DESC='`solver.roll_damping` without `solver.headings_deg`'
+run roll_nohead 1 "applies with solver.headings_deg only" - -- rao "$T/roll_nohead.yaml" --out "$T/o94"
+w roll_amp "$HD
+solver: { method: strip_theory_stf, sections: 10, panels: 6, headings_deg: [90], roll_amplitude_deg: 45, frequencies: { lambda_over_L: [1.0, 2.0] } }"
+DESC='`solver.roll_amplitude_deg: 45`'
+run roll_amp 1 "key 'solver.roll_amplitude_deg'" - -- rao "$T/roll_amp.yaml" --out "$T/o95"
+w roll_cat "$HD
+solver: { method: strip_theory_stf, sections: 10, panels: 6, headings_deg: [90], frequencies: { lambda_over_L: [1.0, 2.0] } }"
+DESC='roll damping of the Delft 372 catamaran (warning case: Ikeda does not cover a demihull pair)'
+run roll_cat 0 "do not cover a demihull pair" "{T}/o96/rao.csv" -- rao "$T/roll_cat.yaml" --out "$T/o96"
+w roll_mono "hull: { parametric: { type: monohull, section_style: round_bilge, displacement_t: 1000, L_over_B: 11.9, B_over_T: 4.51, Cb: 0.39, Cp: 0.60, Cwp: 0.66, LCB_pct_L: -9.6, LCF_pct_L: -15.5, transom_immersion: 0.3, transom_beam_ratio: 1.0, keel_rise: 0.3 } }
+mass: { kg_m: 4.0 }
+speed: { kn: 40 }
+solver: { method: strip_theory_stf, sections: 10, panels: 6, headings_deg: [90], frequencies: { lambda_over_L: [1.0, 2.0] } }"
+DESC='roll damping of the Table 1 monohull MONa (warning case: Cb 0.39, Cm 0.65 outside Ikeda'"'"'s fitted range)'
+run roll_mono 0 "Cb = 0.39 is outside the range [0.5, 0.85]" "{T}/o97/rao.csv" -- rao "$T/roll_mono.yaml" --out "$T/o97"
 
 # Not a row: without a mass block, hydrostatics.json's KG is the documented default, the draught.
 w nomass "hull: { parametric: { $P } }"

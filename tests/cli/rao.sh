@@ -45,7 +45,10 @@ header=$(awk '!/^#/ { print; exit }' "$tmp/headings/rao.csv")
 [ "$header" = "wave_direction_deg,omega_e_rad_s,omega_rad_s,lambda_over_L,heave_amp,heave_phase_deg,pitch_amp,pitch_phase_deg,sway_amp,sway_phase_deg,roll_amp,roll_phase_deg,yaw_amp,yaw_phase_deg" ] ||
   fail "headings rao.csv header: $header"
 [ "$(grep -v '^#' "$tmp/headings/rao.csv" | tail -n +2 | wc -l)" = 9 ] || fail "headings rao.csv should have 3 x 3 rows"
-grep -q "potential damping only" "$tmp/headings/rao.csv" || fail "headings rao.csv does not say roll has potential damping only"
+grep -q "roll damping: the demihulls' Cs heave damping" "$tmp/headings/rao.csv" ||
+  fail "headings rao.csv does not say which roll damping the catamaran has"
+grep -q "^# warning: roll damping: Ikeda's monohull formulae do not cover a demihull pair" "$tmp/headings/rao.csv" ||
+  fail "headings rao.csv does not flag Ikeda's range for the catamaran"
 grep -v '^#' "$tmp/headings/rao.csv" | tail -n +2 | awk -F, '$1 == 180 && ($9 > 1e-9 || $11 > 1e-9 || $13 > 1e-9) { exit 1 }' ||
   fail "head seas on a symmetric catamaran show sway, roll or yaw"
 grep -v '^#' "$tmp/headings/rao.csv" | tail -n +2 | awk -F, '$1 == 90 && $11 < 0.1 { exit 1 }' ||
