@@ -401,7 +401,8 @@ void Run(const std::string& config_file, const std::string& out_dir) {
     io::WriteOperabilityPolarCsv(OutPath(out_dir, "operability_polar.csv"), *polar, operability.polar.criteria);
     files.push_back("operability_polar.csv");
     if (report.plots) {
-      std::vector<std::string> notes = {"Operability: share of the scatter diagram " + operability.scatter_csv +
+      std::vector<std::string> notes = {"Operability: share of the scatter diagram " +
+                                        std::filesystem::path(operability.scatter_csv).filename().string() +
                                         " (long-crested seas at each heading) with every criterion met:"};
       for (const auto& c : operability.polar.criteria) {
         char b[200];

@@ -13,7 +13,7 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 constexpr double kKnot = 1852.0 / 3600.0;  // [m/s]
-constexpr double kWidth = 820.0, kCx = 410.0, kCy = 400.0, kRadius = 290.0;
+constexpr double kWidth = 900.0, kCx = 450.0, kCy = 330.0, kRadius = 250.0;
 
 std::string F(double v) {
   char b[32];
@@ -88,6 +88,8 @@ std::string RenderOperabilityPolarSvg(const eval::OperabilityPolar& polar, const
   // Angular half-width of a heading's sector: half the smallest gap between headings (15° for one heading).
   double half = 15.0;
   for (std::size_t i = 1; i < headings.size(); ++i) half = std::min(half, 0.5 * (headings[i] - headings[i - 1]));
+  bool any_missing = false;
+  for (const auto& c : polar.cells) any_missing = any_missing || !c.computed;
   const double notes_h = 18.0 * (notes.size() + (mirror ? 1 : 0) + 1);
   const double height = kCy + kRadius + 110.0 + notes_h;
 
@@ -133,13 +135,17 @@ std::string RenderOperabilityPolarSvg(const eval::OperabilityPolar& polar, const
     svg << "<circle cx=\"" << kCx << "\" cy=\"" << kCy << "\" r=\"" << F(R(speed_bands[i].second))
         << "\" stroke-dasharray=\"3 3\"/>\n";
   svg << "</g>\n<g class=\"labels\" font-size=\"12\" fill=\"#222\">\n";
+  // Speed labels down the following-seas axis (where a polar of 90–270° has no cells), on a white ground.
   for (std::size_t i = 0; i < speeds.size(); ++i) {
-    const double r = R(speeds[i]), t = ScreenAngle(180.0) - (half + 1.0) * kPi / 180.0;
+    const double r = R(speeds[i]), t = ScreenAngle(0.0);
     char buf[32];
     std::snprintf(buf, sizeof buf, "%g kn", speeds[i]);
-    svg << "<text x=\"" << F(Px(r, t) - 4) << "\" y=\"" << F(Py(r, t) + 4) << "\" text-anchor=\"end\">" << buf
-        << "</text>\n";
+    svg << "<rect x=\"" << F(Px(r, t) - 22) << "\" y=\"" << F(Py(r, t) - 9) << "\" width=\"44\" height=\"15\" rx=\"3\" "
+        << "fill=\"white\" fill-opacity=\"0.85\"/><text x=\"" << F(Px(r, t)) << "\" y=\"" << F(Py(r, t) + 3)
+        << "\" text-anchor=\"middle\">" << buf << "</text>\n";
   }
+  svg << "<text x=\"" << F(kCx + 30) << "\" y=\"" << F(kCy + 0.5 * kRadius) << "\" font-size=\"11\" fill=\"#555\">"
+      << "speed (radius)</text>\n";
   for (double b : {0.0, 45.0, 90.0, 135.0, 180.0, 225.0, 270.0, 315.0}) {
     const double t = ScreenAngle(b), r = kRadius + 22.0;
     std::string text = std::to_string(int(b)) + "°";
@@ -157,7 +163,7 @@ std::string RenderOperabilityPolarSvg(const eval::OperabilityPolar& polar, const
       << " Z\" fill=\"#333\"/>\n";
   svg << "</g>\n";
   // Colour bar and legend.
-  const double by = kCy + kRadius + 50.0, bx = 160.0, bw = 400.0;
+  const double by = kCy + kRadius + 50.0, bx = 150.0, bw = 400.0;
   svg << "<defs><linearGradient id=\"opbar\">";
   for (int i = 0; i <= 10; ++i) svg << "<stop offset=\"" << i * 10 << "%\" stop-color=\"" << Colour(i / 10.0) << "\"/>";
   svg << "</linearGradient></defs>\n";
@@ -166,8 +172,10 @@ std::string RenderOperabilityPolarSvg(const eval::OperabilityPolar& polar, const
     svg << "<text x=\"" << bx + bw * i / 4 << "\" y=\"" << by + 28 << "\" font-size=\"11\" text-anchor=\"middle\">"
         << 25 * i << " %</text>\n";
   svg << "<text x=\"" << bx + bw + 10 << "\" y=\"" << by + 12 << "\" font-size=\"12\">operability</text>\n";
-  svg << "<rect x=\"" << bx + bw + 90 << "\" y=\"" << by << "\" width=\"18\" height=\"14\" fill=\"url(#hatch)\"/>"
-      << "<text x=\"" << bx + bw + 112 << "\" y=\"" << by + 12 << "\" font-size=\"11\">not computed (ω_e ≤ 0)</text>\n";
+  if (any_missing)
+    svg << "<rect x=\"" << bx + bw + 90 << "\" y=\"" << by << "\" width=\"18\" height=\"14\" fill=\"url(#hatch)\"/>"
+        << "<text x=\"" << bx + bw + 112 << "\" y=\"" << by + 12
+        << "\" font-size=\"11\">not computed (ω_e ≤ 0)</text>\n";
   double y = by + 52.0;
   std::vector<std::string> lines = notes;
   if (mirror) lines.push_back("Headings 0–180° computed; the port side (180–360°) mirrors them (port–starboard symmetric hull).");

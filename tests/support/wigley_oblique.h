@@ -55,6 +55,15 @@ inline sk::ObliqueMassProperties WigleyShipMass(double scale, double kg_m) {
   return m;
 }
 
+/// Solver options of the data (fresh water, ρ = 1000; g = 9.81) at speed_m_s.
+inline sk::ObliqueStripOptions WigleyObliqueOptions(double speed_m_s) {
+  sk::ObliqueStripOptions o;
+  o.rho_kg_m3 = 1000.0;
+  o.g_m_s2 = 9.81;
+  o.speed_m_s = speed_m_s;
+  return o;
+}
+
 /// The largest of |F_d|/|F_3| and |X_d|/(|X_3| + |X_5|) over sway, roll and yaw (d = 2, 4, 6): zero to
 /// rounding for a port–starboard symmetric hull in head or following seas.
 inline double AntisymmetricFraction(const sk::ObliqueWaveResult& w) {

@@ -26,19 +26,13 @@ using namespace hullopt;
 using C = std::complex<double>;
 
 namespace {
-constexpr double kRho = 1000.0, kG = 9.81;
+constexpr double kG = 9.81;  // as test::WigleyObliqueOptions
+const auto Options = test::WigleyObliqueOptions;
 
-sk::ObliqueStripOptions Options(double speed) {
-  sk::ObliqueStripOptions o;
-  o.rho_kg_m3 = kRho;
-  o.g_m_s2 = kG;
-  o.speed_m_s = speed;
-  return o;
-}
-
+// n wave frequencies evenly from lo to hi [rad/s].
 std::vector<double> Grid(double lo, double hi, int n) {
-  std::vector<double> w;
-  for (int i = 0; i < n; ++i) w.push_back(lo + (hi - lo) * i / (n - 1));
+  std::vector<double> w(n);
+  for (int i = 0; i < n; ++i) w[i] = lo + (hi - lo) * i / (n - 1);
   return w;
 }
 

@@ -23,7 +23,7 @@
 using namespace hullopt;
 
 namespace {
-constexpr double kRho = 1000.0, kG = 9.81;
+constexpr double kG = 9.81;  // as test::WigleyObliqueOptions
 constexpr double kScale = 20.0, kL = kScale * test::kWigleyL;
 const double kU = 0.3 * std::sqrt(kG * kL);  // Fn 0.3, 7.3 m/s
 
@@ -37,11 +37,8 @@ eval::ObliqueSolve Solver(std::vector<std::vector<double>>* asked = nullptr) {
   return [asked](double U, const std::vector<double>& headings) {
     if (asked) asked->push_back(headings);
     static const auto stations = test::WigleyShipStations(kScale, 16, 10);
-    sk::ObliqueStripOptions o;
-    o.rho_kg_m3 = kRho;
-    o.g_m_s2 = kG;
-    o.speed_m_s = U;
-    return sk::SolveObliqueStripTheory(stations, test::WigleyShipMass(kScale, 3.0), Grid(), headings, o);
+    return sk::SolveObliqueStripTheory(stations, test::WigleyShipMass(kScale, 3.0), Grid(), headings,
+                                       test::WigleyObliqueOptions(U));
   };
 }
 
