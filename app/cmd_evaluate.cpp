@@ -23,6 +23,9 @@
 //   speed: { kn: 40 }                        # optional check of the speed implied by the RAO files
 //   water: { g_m_s2: 9.81 }                  # optional
 //   seas: [...]; msi: {...}; positions: { points: [...] }   (io/config/seas_config.h)
+//   operability: {...}                     # scatter diagram and criteria (io/config/operability_config.h); its
+//                                            # polar: block (a design computed here) adds operability_polar.csv
+//                                            # and .svg: speeds x headings in oblique seas
 //   report: { plots: true }
 #include <chrono>
 #include <cmath>
@@ -37,6 +40,8 @@
 #include "app/commands.h"
 #include "app/output_options.h"
 #include "app/design_resolution_check.h"
+#include "evaluation/oblique_design.h"
+#include "evaluation/operability_polar.h"
 #include "evaluation/validity_envelope.h"
 #include "io/config/design_defaults.h"
 #include "io/config/design_config.h"
@@ -47,6 +52,7 @@
 #include "io/formats/criteria_csv.h"
 #include "io/report/evaluation_report.h"
 #include "io/report/html_report.h"
+#include "io/report/operability_polar_plot.h"
 #include "io/report/verdict_report.h"
 #include "io/formats/input_error.h"
 #include "io/formats/rao_table_csv.h"
@@ -84,6 +90,7 @@ struct DesignInput {
   YAML::Node pending_resolved;                // its config's resolved tree (the run-cost estimate)
   std::string pending_file, pending_label;    // its config file; the cost check's label
   std::vector<std::string> pending_warnings;  // flags of the evaluation's overrides, appended once built
+  std::optional<double> kxx_m;                // mass.kxx_m (the operability polar's roll)
 };
 
 // A design whose RAOs are computed here by the strip solver from `dc` (read from `file`, whose resolved config
@@ -248,6 +255,12 @@ void Run(const std::string& config_file, const std::string& out_dir) {
                          "(one design's RAOs from a file) or 'designs' (a list)");
 
   std::vector<DesignInput> inputs;
+  // operability.polar computes roll: the design's KG is required and mass.kxx_m may be given.
+  io::DesignReadOptions read;
+  {
+    const YAML::Node op = root.raw()["operability"];
+    read.roll = op && op.IsMap() && op["polar"];
+  }
   if (computed) {
     std::vector<std::string> notes;
     io::SkipCampaignBlocks(root, &notes);
@@ -258,7 +271,7 @@ void Run(const std::string& config_file, const std::string& out_dir) {
       io::YamlMap check(root.raw(), "", config_file, YAML::Node(YAML::NodeType::Map));
       io::SkipCampaignBlocks(check, nullptr);
       io::ParseDesignName(check, "design");
-      io::ParseDesign(check, config_file, "design");
+      io::ParseDesign(check, config_file, "design", read);
       ReadEvaluateBlocks(check);
     }
     io::FillDefaultFrequencies(root, &notes);
@@ -267,7 +280,8 @@ void Run(const std::string& config_file, const std::string& out_dir) {
     in.where = root.Where("hull");
     // Recorded in config.resolved.yaml, so that a re-run keeps the design's name.
     in.design.name = io::ParseDesignName(root, std::filesystem::path(config_file).stem().string());
-    in.pending = io::ParseDesign(root, config_file, in.design.name);
+    in.pending = io::ParseDesign(root, config_file, in.design.name, read);
+    in.kxx_m = in.pending->kxx_m;
     in.pending_resolved = root.resolved();
     in.pending_file = config_file;
     in.pending_label = "evaluate";
@@ -290,6 +304,10 @@ void Run(const std::string& config_file, const std::string& out_dir) {
   const std::vector<sk::PassengerPosition>& points = blocks.points;
   const io::OperabilityConfig& operability = blocks.operability;
   const io::ResolutionCheckConfig& resolution = blocks.resolution;
+  if (operability.polar.present && !computed)
+    throw io::InputError(operability.polar.where +
+                         ": the polar computes the motions in oblique seas, so it needs the design's hull here "
+                         "(hull: ...), not RAO files");
   const io::EvaluationReportOptions& report = blocks.report;
 
   // The whole config has been read and checked: now the designs are built (hull, mass, running attitude).
@@ -335,6 +353,24 @@ void Run(const std::string& config_file, const std::string& out_dir) {
     designs.push_back(in.design);
   }
 
+  // The operability polar: the oblique-sea strip theory per speed over the headings, on the scatter diagram.
+  std::optional<eval::OperabilityPolar> polar;
+  if (operability.polar.present) {
+    const DesignInput& in = inputs.front();
+    eval::PolarOptions po = operability.polar.options;
+    po.omega_rad_s = in.omega_rad_s;
+    po.evaluation = options;
+    const double kxx = in.kxx_m ? *in.kxx_m : eval::DefaultRollRadiusOfGyration(in.computed->hull);
+    try {
+      polar = eval::ComputeOperabilityPolar(*in.computed, kxx, operability.diagram, operability.polar.criteria,
+                                            points, po);
+    } catch (const std::invalid_argument& e) {
+      throw io::InputError(operability.polar.where + ": " + e.what());
+    } catch (const std::domain_error& e) {
+      throw io::InputError(operability.polar.where + ": " + e.what());
+    }
+  }
+
   std::vector<io::DesignOperability> operabilities;
   if (operability.present) {
     for (const auto& d : designs) {
@@ -359,6 +395,35 @@ void Run(const std::string& config_file, const std::string& out_dir) {
       for (size_t k = 0; k < operability.criteria.size(); ++k)
         Say("; %s %.1f %%", operability.criteria[k].name.c_str(), o.result.criterion_time_pct[k]);
       Say("\n");
+    }
+  }
+  if (polar) {
+    io::WriteOperabilityPolarCsv(OutPath(out_dir, "operability_polar.csv"), *polar, operability.polar.criteria);
+    files.push_back("operability_polar.csv");
+    if (report.plots) {
+      std::vector<std::string> notes = {"Operability: share of the scatter diagram " +
+                                        std::filesystem::path(operability.scatter_csv).filename().string() +
+                                        " (long-crested seas at each heading) with every criterion met:"};
+      for (const auto& c : operability.polar.criteria) {
+        char b[200];
+        std::snprintf(b, sizeof b, "  %s <= %g %s%s%s", c.name.c_str(), c.limit,
+                      eval::PolarQuantityUnit(c.quantity).c_str(), c.source.empty() ? "" : " - ",
+                      c.source.c_str());
+        notes.push_back(b);
+      }
+      notes.push_back("Oblique-sea strip theory (STF), roll with potential damping only; running attitude of the "
+                      "design speed at every speed.");
+      io::WriteOperabilityPolarSvg(OutPath(out_dir, "operability_polar.svg"), *polar,
+                                   "Operability polar: " + designs.front().name, notes);
+      files.push_back("operability_polar.svg");
+    }
+    Say("operability polar %s (share of the scatter diagram with every criterion met):\n",
+        designs.front().name.c_str());
+    for (const auto& c : polar->cells) {
+      if (c.computed)
+        Say("  %6.1f kn %6.1f deg  %5.1f %%\n", c.speed_m_s / kKnot, c.heading_deg, 100.0 * c.operability);
+      else
+        Say("  %6.1f kn %6.1f deg  not computed: %s\n", c.speed_m_s / kKnot, c.heading_deg, c.note.c_str());
     }
   }
   const std::vector<std::string> warnings = io::EvaluationWarnings(designs, report);

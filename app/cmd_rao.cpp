@@ -13,6 +13,7 @@
 #include "app/run_checks.h"
 #include "evaluation/adaptive_frequency_grid.h"
 #include "evaluation/hull_plausibility.h"
+#include "evaluation/oblique_design.h"
 #include "evaluation/strip_attitude.h"
 #include "io/config/design_config.h"
 #include "io/config/hull_config.h"
@@ -33,15 +34,6 @@
 
 namespace hullopt::app {
 namespace {
-
-// Half the overall beam of the hull's offsets (every body, its centreline offset included) [m].
-double HalfOverallBeam(const hull::HullForm& hull) {
-  double b = 0.0;
-  for (const auto& body : hull.bodies)
-    for (const auto& st : body.stations)
-      for (double y : st.y_m) b = std::max(b, std::fabs(body.y_centre_m) + y);
-  return b;
-}
 
 // What solver.headings_deg and its mass keys give: the headings, the roll radius of gyration and the viscous
 // roll damping (solver.roll_damping, solver.roll_amplitude_deg).
@@ -98,20 +90,14 @@ double RollNaturalFrequency(const sk::ObliqueStripResult& r) {
 
 // The RAOs of every heading by the oblique-sea strip theory (sk::SolveObliqueStripTheory) on the strips'
 // own stations, written as rao.csv with a heading column. Yaw's radius of gyration is taken as pitch's.
-void WriteObliqueRaos(const HeadingRequest& req, const sk::StripKernel& geometry, const hull::HullForm& hull,
-                      const hull::MassProperties& mass, const hull::Hydrostatics& hs, double draught_m,
-                      double U, const io::WaterOptions& water, const std::vector<double>& omega,
+void WriteObliqueRaos(const HeadingRequest& req, const sk::StripKernel& geometry,
+                      const eval::DesignCase& design, const hull::Hydrostatics& hs, double U, const io::WaterOptions& water, const std::vector<double>& omega,
                       const std::string& hull_name, std::vector<std::string> notes,
                       const std::string& out_dir) {
   std::vector<sk::ObliqueStripStation> stations;
   for (int n = 0; n < geometry.Steps(); ++n)
     stations.push_back({geometry.x_m[n], geometry.Weight(n), geometry.panels[n]});
-  sk::ObliqueMassProperties m;
-  m.mass_kg = mass.mass_kg;
-  m.x_g_m = mass.lcg_m_from_ap;
-  m.z_g_m = mass.kg_m - draught_m;
-  m.inertia_kg_m2.diagonal() << mass.mass_kg * req.kxx_m * req.kxx_m, mass.mass_kg * mass.kyy_m * mass.kyy_m,
-      mass.mass_kg * mass.kyy_m * mass.kyy_m;
+  const sk::ObliqueMassProperties m = eval::ObliqueMassOf(design, req.kxx_m);
   sk::ObliqueStripOptions o;
   o.rho_kg_m3 = water.rho_kg_m3;
   o.g_m_s2 = water.g_m_s2;
@@ -120,7 +106,7 @@ void WriteObliqueRaos(const HeadingRequest& req, const sk::StripKernel& geometry
     o.roll_damping.model = sk::RollDampingModel::kIkeda;
     o.roll_damping.roll_amplitude_rad = req.roll_amplitude_deg * M_PI / 180.0;
     o.roll_damping.damping_cs = req.cs;
-    o.roll_damping_hull = RollDampingHullOf(hull, hs, -m.z_g_m, water.rho_kg_m3);
+    o.roll_damping_hull = RollDampingHullOf(design.hull, hs, -m.z_g_m, water.rho_kg_m3);
   }
   sk::ObliqueStripResult r;
   int roll_flags = 0;
@@ -210,7 +196,7 @@ void RunRao(const std::string& config_file, const std::string& out_dir) {
   HeadingRequest headings;
   headings.headings_deg = parsed.headings_deg;
   const bool oblique = !headings.headings_deg.empty();
-  if (oblique) headings.kxx_m = parsed.kxx_m ? *parsed.kxx_m : 0.35 * 2.0 * HalfOverallBeam(hull);
+  if (oblique) headings.kxx_m = parsed.kxx_m ? *parsed.kxx_m : eval::DefaultRollRadiusOfGyration(hull);
   headings.roll_damping = parsed.roll_damping == "ikeda";
   headings.roll_amplitude_deg = parsed.roll_amplitude_deg;
   headings.cs = sc.cs();
@@ -247,7 +233,7 @@ void RunRao(const std::string& config_file, const std::string& out_dir) {
     notes.push_back(fn.str());
     for (const auto& a : hull.adjustments) notes.push_back("adjusted: " + a);
     for (const auto& w : input_warnings) notes.push_back("warning: " + w);
-    WriteObliqueRaos(headings, geometry, hull, mass, hs, running.draught_m, U, water, omega, hull_name, notes,
+    WriteObliqueRaos(headings, geometry, design, hs, U, water, omega, hull_name, notes,
                      out_dir);
     return;
   }

@@ -81,8 +81,15 @@ ParsedDesign ParseDesign(YamlMap& root, const std::string& config_file, const st
               "the impulsive stand-in kernel has the momentum form only (use kernel: "
               "transient_green)");
   }
+  if (o.roll) {  // roll needs the centre of gravity's height: no default KG
+    const YAML::Node mass = root.raw()["mass"];
+    if (!(mass && mass.IsMap() && (mass["kg_m"] || mass["kg_over_T"])))
+      throw InputError(root.Where(o.roll_key.substr(0, o.roll_key.find('.'))) + ": " + o.roll_key +
+                       " computes roll, which needs the height of the centre of gravity: give mass.kg_m (or "
+                       "mass.kg_over_T)");
+  }
   YamlMap mass_map = root.MapOrEmpty("mass");
-  if (!p.headings_deg.empty()) {
+  if (!p.headings_deg.empty() || o.roll) {
     if (mass_map.Has("kxx_m")) {
       p.kxx_m = mass_map.Number("kxx_m");
       if (!(*p.kxx_m > 0.0)) mass_map.Fail("kxx_m", "must be > 0 (typically 0.35 to 0.4 of the overall beam)");

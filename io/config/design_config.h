@@ -52,6 +52,11 @@ struct DesignReadOptions {
   /// solver.headings_deg (oblique seas, method strip_theory_stf) and mass.kxx_m may be given (rao); with
   /// headings the centre of gravity's height (mass.kg_m or kg_over_T) is required: roll needs it.
   bool headings = false;
+  /// The command computes roll (evaluate's operability.polar): mass.kxx_m may be given and the centre of
+  /// gravity's height (mass.kg_m or kg_over_T) is required; `roll_key` names the block that asks for it (its
+  /// first component, a key of the config's root, places the error).
+  bool roll = false;
+  std::string roll_key = "operability.polar";
   /// The design's name read between the speed and the solver, from the hull's options (rao: the hull file's
   /// stem as the default), so that the resolved config keeps its key order.
   std::function<std::string(const HullOptions&)> name_after_hull;

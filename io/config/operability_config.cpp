@@ -3,6 +3,7 @@
 #include <cmath>
 #include <fstream>
 #include <sstream>
+#include <string>
 
 #include "io/config/config_path.h"
 #include "io/formats/csv_fields.h"
@@ -58,6 +59,87 @@ sk::ScatterDiagram ReadScatterCsv(const std::string& path, double scale) {
   return d;
 }
 
+namespace {
+
+constexpr double kKnot = 1852.0 / 3600.0;  // [m/s]
+
+bool KnownPosition(const std::string& name, const std::vector<sk::PassengerPosition>& user_points) {
+  bool known = name == "mean" || name == "forward" || name == "lcg" || name == "transom";
+  for (const auto& p : user_points) known = known || p.name == name;
+  return known;
+}
+
+std::string Short(double v) {
+  std::ostringstream os;
+  os << v;
+  return os.str();
+}
+
+OperabilityPolarConfig ParsePolar(YamlMap& m, const std::vector<sk::PassengerPosition>& user_points) {
+  OperabilityPolarConfig c;
+  c.present = true;
+  c.speeds_kn = m.Numbers("speeds_kn");
+  for (double v : c.speeds_kn) {
+    if (!(v >= 0.0)) m.Fail("speeds_kn", "speed " + Short(v) + " kn must be >= 0");
+    c.options.speeds_m_s.push_back(v * kKnot);
+  }
+  c.options.headings_deg = m.Numbers("headings_deg");
+  for (std::size_t i = 0; i < c.options.headings_deg.size(); ++i) {
+    const double h = c.options.headings_deg[i];
+    if (!(h >= 0.0 && h < 360.0))
+      m.Fail("headings_deg", "heading " + Short(h) +
+                                 " deg must lie in [0, 360) (180 head seas, 90 beam seas from starboard; "
+                                 "docs/conventions.md)");
+    for (std::size_t j = 0; j < i; ++j)
+      if (c.options.headings_deg[j] == h) m.Fail("headings_deg", "heading " + Short(h) + " deg is given twice");
+  }
+  struct Kind {
+    const char* key;
+    eval::PolarQuantity quantity;
+    double max;
+    const char* unit;
+  };
+  static const Kind kKinds[] = {
+      {"rms_vertical_accel_max_g", eval::PolarQuantity::kRmsVerticalAcceleration, 2.0, "g"},
+      {"rms_lateral_accel_max_g", eval::PolarQuantity::kRmsLateralAcceleration, 2.0, "g"},
+      {"roll_rms_max_deg", eval::PolarQuantity::kRmsRoll, 45.0, "deg"},
+      {"msi_max_pct", eval::PolarQuantity::kMsi, 100.0, "%"}};
+  for (YamlMap& k : m.ListOfMaps("criteria")) {
+    eval::PolarCriterion cr;
+    const Kind* kind = nullptr;
+    int kinds = 0;
+    for (const auto& q : kKinds)
+      if (k.Has(q.key)) ++kinds, kind = &q;
+    if (kinds != 1)
+      k.Fail("rms_vertical_accel_max_g",
+             "give exactly one of rms_vertical_accel_max_g, rms_lateral_accel_max_g, roll_rms_max_deg, msi_max_pct");
+    cr.quantity = kind->quantity;
+    cr.limit = k.Number(kind->key);
+    if (!(cr.limit > 0.0 && cr.limit <= kind->max))
+      k.Fail(kind->key, "must be in (0, " + Short(kind->max) + "] " + kind->unit);
+    if (cr.quantity == eval::PolarQuantity::kRmsRoll) {
+      for (const char* key : {"position", "y_m", "z_m"})
+        if (k.Has(key)) k.Fail(key, "roll has no position (a rotation of the whole hull)");
+      cr.position = "";
+      cr.name = "rms_roll";
+    } else {
+      cr.position = k.String("position", "mean");
+      if (!KnownPosition(cr.position, user_points))
+        k.Fail("position", "'" + cr.position + "' is not forward, lcg, transom, mean or a positions.points name");
+      cr.y_m = k.Number("y_m", 0.0);
+      cr.z_m = k.Number("z_m", 0.0);
+      cr.name = eval::PolarQuantityName(cr.quantity) + "_" + cr.position;
+    }
+    cr.name = k.String("name", cr.name);
+    cr.source = k.String("source", "");
+    k.Finish();
+    c.criteria.push_back(cr);
+  }
+  return c;
+}
+
+}  // namespace
+
 OperabilityConfig ParseOperability(YamlMap& root, const std::vector<sk::PassengerPosition>& user_points) {
   OperabilityConfig c;
   if (!root.Has("operability")) return c;
@@ -80,9 +162,7 @@ OperabilityConfig ParseOperability(YamlMap& root, const std::vector<sk::Passenge
   for (YamlMap& k : m.ListOfMaps("criteria")) {
     sk::OperabilityCriterion cr;
     cr.position = k.String("position", "mean");
-    bool known = cr.position == "mean" || cr.position == "forward" || cr.position == "lcg" || cr.position == "transom";
-    for (const auto& p : user_points) known = known || p.name == cr.position;
-    if (!known) k.Fail("position", "'" + cr.position + "' is not forward, lcg, transom, mean or a positions.points name");
+    if (!KnownPosition(cr.position, user_points)) k.Fail("position", "'" + cr.position + "' is not forward, lcg, transom, mean or a positions.points name");
     const int kinds = int(k.Has("msi_max_pct")) + int(k.Has("rms_accel_max_g")) + int(k.Has("nordforsk"));
     if (kinds != 1) k.Fail("msi_max_pct", "give exactly one of msi_max_pct, rms_accel_max_g, nordforsk");
     if (k.Has("msi_max_pct")) {
@@ -105,6 +185,12 @@ OperabilityConfig ParseOperability(YamlMap& root, const std::vector<sk::Passenge
     cr.name = k.String("name", cr.name);
     k.Finish();
     c.criteria.push_back(cr);
+  }
+  if (m.Has("polar")) {
+    YamlMap p = m.Map("polar");
+    c.polar = ParsePolar(p, user_points);
+    c.polar.where = m.Where("polar");
+    p.Finish();
   }
   m.Finish();
   return c;

@@ -3,8 +3,10 @@
 #include <cmath>
 #include <fstream>
 #include <iomanip>
+#include <sstream>
 #include <nlohmann/json.hpp>
 
+#include "io/formats/atomic_file.h"
 #include "io/formats/input_error.h"
 
 namespace hullopt::io {
@@ -56,6 +58,28 @@ std::vector<std::string> WriteOperabilityOutputs(const std::string& dir, const s
   g << j.dump(2) << "\n";
   if (!g) throw InputError("cannot write " + js);
   return {"operability.csv", "operability.json"};
+}
+
+void WriteOperabilityPolarCsv(const std::string& path, const eval::OperabilityPolar& polar,
+                              const std::vector<eval::PolarCriterion>& criteria) {
+  constexpr double kKnot = 1852.0 / 3600.0;  // [m/s]
+  std::ostringstream f;
+  f << "speed_kn,wave_direction_deg,operability";
+  for (const auto& c : criteria) f << ",share_" << c.name;
+  f << ",note\n" << std::setprecision(10);
+  for (const auto& cell : polar.cells) {
+    f << cell.speed_m_s / kKnot << ',' << cell.heading_deg << ',';
+    if (cell.computed) f << Finite(cell.operability, "operability");
+    for (double v : cell.criterion_share) {
+      f << ',';
+      if (cell.computed) f << Finite(v, "criterion share");
+    }
+    // The note is free text: quoted, with any quote doubled.
+    std::string note;
+    for (char ch : cell.note) note += ch == '"' ? std::string("\"\"") : std::string(1, ch);
+    f << ",\"" << note << "\"\n";
+  }
+  WriteFileAtomically(path, f.str());
 }
 
 }  // namespace hullopt::io

@@ -1,8 +1,10 @@
 #pragma once
-// operability.csv and operability.json of `hullopt evaluate` with an `operability:` block.
+// operability.csv and operability.json of `hullopt evaluate` with an `operability:` block, and
+// operability_polar.csv with its `polar:`.
 #include <string>
 #include <vector>
 
+#include "evaluation/operability_polar.h"
 #include "seas/operability.h"
 
 namespace hullopt::io {
@@ -21,5 +23,11 @@ std::vector<std::string> WriteOperabilityOutputs(const std::string& dir, const s
                                                  const sk::ScatterDiagram& diagram,
                                                  const std::vector<sk::OperabilityCriterion>& criteria,
                                                  const std::string& scatter_source);
+
+/// operability_polar.csv: speed_kn,wave_direction_deg (the heading β, as rao.csv),operability ([-] share of the scatter diagram's probability with
+/// every criterion met), then share_<name> per criterion and a note; a cell not computed has empty values and
+/// its reason in the note. Written atomically; throws InputError if it cannot be written.
+void WriteOperabilityPolarCsv(const std::string& path, const eval::OperabilityPolar& polar,
+                              const std::vector<eval::PolarCriterion>& criteria);
 
 }  // namespace hullopt::io

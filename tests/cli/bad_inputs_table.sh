@@ -522,6 +522,37 @@ solver: { method: strip_theory_stf, sections: 10, panels: 6, headings_deg: [90],
 DESC='roll damping of the Table 1 monohull MONa (warning case: Cb 0.39, Cm 0.65 outside Ikeda'"'"'s fitted range)'
 run roll_mono 0 "Cb = 0.39 is outside the range [0.5, 0.85]" "{T}/o97/rao.csv" -- rao "$T/roll_mono.yaml" --out "$T/o97"
 
+# The operability polar (evaluate's operability.polar): headings outside [0, 360), roll without KG, RAO files.
+PO="hull: { $D372 }
+speed: { Fn: 0.5 }
+water: { rho_kg_m3: 1000 }
+solver: { sections: 10, panels: 6, frequencies: { lambda_over_L: [1.0, 2.0] } }
+seas: [ { Hs_m: 0.1, Tz_s: 2.5 } ]"
+printf 'Hs_m\\Tz_s,2.5\n0.1,1\n' > "$T/route_model.csv"
+w polar_360 "$PO
+mass: { kg_m: 0.34 }
+operability: { scatter_csv: route_model.csv, criteria: [ { msi_max_pct: 20 } ],
+               polar: { speeds_kn: [2], headings_deg: [180, 360], criteria: [ { roll_rms_max_deg: 4 } ] } }"
+DESC='`operability.polar.headings_deg: [180, 360]`'
+run polar_360 1 "key 'operability.polar.headings_deg'" - -- evaluate "$T/polar_360.yaml" --out "$T/o98"
+w polar_nokg "$PO
+operability: { scatter_csv: route_model.csv, criteria: [ { msi_max_pct: 20 } ],
+               polar: { speeds_kn: [2], headings_deg: [180], criteria: [ { roll_rms_max_deg: 4 } ] } }"
+DESC='`operability.polar` without `mass.kg_m` (roll needs KG)'
+run polar_nokg 1 "give mass.kg_m" - -- evaluate "$T/polar_nokg.yaml" --out "$T/o99"
+w polar_speed "$PO
+mass: { kg_m: 0.34 }
+operability: { scatter_csv: route_model.csv, criteria: [ { msi_max_pct: 20 } ],
+               polar: { speeds_kn: [-5], headings_deg: [180], criteria: [ { roll_rms_max_deg: 4 } ] } }"
+DESC='`operability.polar.speeds_kn: [-5]`'
+run polar_speed 1 "key 'operability.polar.speeds_kn'" - -- evaluate "$T/polar_speed.yaml" --out "$T/o100"
+w polar_roll_at "$PO
+mass: { kg_m: 0.34 }
+operability: { scatter_csv: route_model.csv, criteria: [ { msi_max_pct: 20 } ],
+               polar: { speeds_kn: [2], headings_deg: [180], criteria: [ { roll_rms_max_deg: 4, position: lcg } ] } }"
+DESC='a roll criterion of the polar given a position'
+run polar_roll_at 1 "roll has no position" - -- evaluate "$T/polar_roll_at.yaml" --out "$T/o101"
+
 # Not a row: without a mass block, hydrostatics.json's KG is the documented default, the draught.
 w nomass "hull: { parametric: { $P } }"
 if "$BIN" hull "$T/nomass.yaml" --out "$T/nomass" > /dev/null 2>&1; then

@@ -36,6 +36,34 @@ inline sk::ObliqueMassProperties WigleyObliqueMass(double kg_m) {
   return m;
 }
 
+/// The same hull at `scale` times its size (Froude similar; ρ = 1000 as the data): stations as above, and the
+/// mass with every length scaled, for evaluations in ship-scale seas (MSI needs ship-scale periods).
+inline std::vector<sk::ObliqueStripStation> WigleyShipStations(double scale, int sections, int panels) {
+  sk::StripGeometryOptions o;
+  o.sections = sections;
+  o.panels = panels;
+  o.layout = sk::StationLayout::kCellMidpoints;
+  return sk::ObliqueStripStations(
+      WigleyHull(scale * kWigleyL, scale * kWigleyB, scale * kWigleyT, 201, 61), o);
+}
+inline sk::ObliqueMassProperties WigleyShipMass(double scale, double kg_m) {
+  sk::ObliqueMassProperties m = WigleyObliqueMass(kg_m / scale);
+  m.mass_kg *= scale * scale * scale;
+  m.x_g_m *= scale;
+  m.z_g_m *= scale;
+  m.inertia_kg_m2 *= scale * scale * scale * scale * scale;
+  return m;
+}
+
+/// Solver options of the data (fresh water, ρ = 1000; g = 9.81) at speed_m_s.
+inline sk::ObliqueStripOptions WigleyObliqueOptions(double speed_m_s) {
+  sk::ObliqueStripOptions o;
+  o.rho_kg_m3 = 1000.0;
+  o.g_m_s2 = 9.81;
+  o.speed_m_s = speed_m_s;
+  return o;
+}
+
 /// The largest of |F_d|/|F_3| and |X_d|/(|X_3| + |X_5|) over sway, roll and yaw (d = 2, 4, 6): zero to
 /// rounding for a port–starboard symmetric hull in head or following seas.
 inline double AntisymmetricFraction(const sk::ObliqueWaveResult& w) {

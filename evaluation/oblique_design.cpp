@@ -1,0 +1,44 @@
+#include "evaluation/oblique_design.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+namespace hullopt::eval {
+
+double DefaultRollRadiusOfGyration(const hull::HullForm& hull) {
+  double half_beam = 0.0;
+  for (const auto& body : hull.bodies)
+    for (const auto& st : body.stations)
+      for (double y : st.y_m) half_beam = std::max(half_beam, std::fabs(body.y_centre_m) + y);
+  return 0.35 * 2.0 * half_beam;
+}
+
+sk::ObliqueMassProperties ObliqueMassOf(const DesignCase& design, double kxx_m) {
+  if (!(kxx_m > 0.0) || !std::isfinite(kxx_m))
+    throw std::invalid_argument("roll radius of gyration kxx = " + std::to_string(kxx_m) + " m must be > 0");
+  const hull::MassProperties& mass = design.mass;
+  sk::ObliqueMassProperties m;
+  m.mass_kg = mass.mass_kg;
+  m.x_g_m = mass.lcg_m_from_ap;
+  m.z_g_m = mass.kg_m - design.running_hull.draught_m;
+  m.inertia_kg_m2.diagonal() << mass.mass_kg * kxx_m * kxx_m, mass.mass_kg * mass.kyy_m * mass.kyy_m,
+      mass.mass_kg * mass.kyy_m * mass.kyy_m;
+  return m;
+}
+
+sk::ObliqueStripResult SolveObliqueDesign(const DesignCase& design, double speed_m_s,
+                                          const std::vector<double>& omega_rad_s,
+                                          const std::vector<double>& headings_deg, double kxx_m,
+                                          sk::ObliqueStripOptions options) {
+  const sk::ObliqueMassProperties mass = ObliqueMassOf(design, kxx_m);
+  options.rho_kg_m3 = design.water.rho_kg_m3;
+  options.g_m_s2 = design.water.g_m_s2;
+  options.speed_m_s = speed_m_s;
+  const std::vector<sk::ObliqueStripStation> stations =
+      sk::ObliqueStripStations(design.running_hull, design.solver.rao.Geometry());
+  return sk::SolveObliqueStripTheory(stations, mass, omega_rad_s, headings_deg, options);
+}
+
+}  // namespace hullopt::eval

@@ -1,0 +1,30 @@
+#pragma once
+// The oblique-sea strip theory (seakeeping/motions/oblique_strip_theory.h) for a built design: its running
+// hull's strip stations on the design's strip grid (solver.sections, solver.panels), its mass with the roll and
+// yaw radii of gyration, at any speed and list of headings. No I/O.
+#include <vector>
+
+#include "evaluation/design_case.h"
+#include "seakeeping/motions/oblique_strip_theory.h"
+
+namespace hullopt::eval {
+
+/// The roll radius of gyration taken when none is given: 0.35 × the overall beam of the hull's offsets (every
+/// body at its lateral position), the usual estimate for ships and small craft [m].
+double DefaultRollRadiusOfGyration(const hull::HullForm& hull);
+
+/// The design's mass for the oblique strip theory: mass, LCG (from the AP, the stations' x), z_G = KG − the
+/// running draught, I44 = m kxx², I55 = m kyy², I66 = m kyy² (yaw's radius of gyration taken as pitch's).
+sk::ObliqueMassProperties ObliqueMassOf(const DesignCase& design, double kxx_m);
+
+/// Sway, heave, roll, pitch and yaw at every heading [deg] and wave frequency [rad/s] at speed_m_s (the running
+/// hull of the design's own speed: the attitude is not re-solved per speed), with the design's water and strip
+/// grid; `options` gives the solver's other settings (its rho, g and speed are replaced by the design's and
+/// speed_m_s). Throws what sk::SolveObliqueStripTheory throws (std::domain_error for an encounter frequency
+/// <= 0) and std::invalid_argument for kxx_m <= 0.
+sk::ObliqueStripResult SolveObliqueDesign(const DesignCase& design, double speed_m_s,
+                                          const std::vector<double>& omega_rad_s,
+                                          const std::vector<double>& headings_deg, double kxx_m,
+                                          sk::ObliqueStripOptions options = {});
+
+}  // namespace hullopt::eval

@@ -1,0 +1,76 @@
+#!/usr/bin/env bash
+# `hullopt evaluate` with `operability.polar` end to end on a coarse Delft 372 model (10 sections x 6 panels,
+# 8 frequencies): operability_polar.csv has a row per (speed, heading) with the documented columns, shares in
+# [0, 1], following seas at speed marked (empty values, a note) and computed at zero speed; the SVG is written
+# with head seas labelled and the hatching of the cells not computed; and a polar on RAO files is refused.
+set -euo pipefail
+HULLOPT=${1:?usage: evaluate_polar.sh /path/to/hullopt}
+HULLOPT=$(cd "$(dirname "$HULLOPT")" && pwd)/$(basename "$HULLOPT")
+ROOT=$(cd "$(dirname "$0")/../.." && pwd)
+TMP=$(mktemp -d)
+trap 'rm -rf "$TMP"' EXIT
+fail() { echo "FAIL: $*" >&2; exit 1; }
+
+printf 'Hs_m\\Tz_s,2.5,3.5\n0.05,0.3,0.2\n0.15,0.2,0.3\n' > "$TMP/route.csv"
+cat > "$TMP/polar.yaml" <<YAML
+hull: { offsets_csv: $ROOT/data/delft372/delft372_offsets.csv, draught_m: 0.15, hulls: 2, spacing_m: 0.70 }
+speed: { Fn: 0.5 }
+water: { rho_kg_m3: 1000 }
+mass: { kg_m: 0.34, kxx_m: 0.3 }
+solver: { sections: 10, panels: 6, adaptive_grid: off,
+          frequencies: { range: { quantity: omega_rad_s, from: 2.0, to: 9.0, count: 8 } } }
+seas: [ { Hs_m: 0.1, Tz_s: 2.5 } ]
+operability:
+  scatter_csv: route.csv
+  criteria: [ { msi_max_pct: 20 } ]
+  polar:
+    speeds_kn: [0, 4]
+    headings_deg: [0, 90, 135, 180]
+    criteria:
+      - { rms_vertical_accel_max_g: 0.1, position: forward }
+      - { rms_lateral_accel_max_g: 0.05, position: lcg, z_m: 0.2, name: lateral }
+      - { roll_rms_max_deg: 4 }
+      - { msi_max_pct: 20 }
+YAML
+(cd "$TMP" && "$HULLOPT" evaluate polar.yaml --out out > stdout.txt 2> stderr.txt) \
+  || fail "evaluate with a polar failed: $(cat "$TMP/stderr.txt")"
+[ -s "$TMP/out/operability_polar.svg" ] || fail "no operability_polar.svg"
+grep -q "head seas" "$TMP/out/operability_polar.svg" || fail "the SVG has no head-seas label"
+grep -q 'url(#hatch)' "$TMP/out/operability_polar.svg" || fail "the SVG does not hatch the cells not computed"
+/usr/bin/python3 - "$TMP/out/operability_polar.csv" <<'PY' || fail "operability_polar.csv"
+import csv, sys
+rows = list(csv.DictReader(open(sys.argv[1])))
+head = list(rows[0].keys())
+assert head[:3] == ["speed_kn", "wave_direction_deg", "operability"], head
+assert head[-1] == "note" and "share_lateral" in head, head
+assert len(rows) == 8, len(rows)
+for r in rows:
+    kn, beta = float(r["speed_kn"]), float(r["wave_direction_deg"])
+    if kn > 0 and beta == 0:  # 4 kn = 2.06 m/s: ω_e = 0 at g/U = 4.8 rad/s, inside the grid (to 9 rad/s)
+        assert r["operability"] == "" and "encounter frequency <= 0" in r["note"], r
+    else:
+        assert r["note"] == "", r
+        op = float(r["operability"])
+        assert 0.0 <= op <= 1.0, r
+        for k in head[3:-1]:
+            assert op <= float(r[k]) + 1e-12, (k, r)  # all criteria together hold no more often than each
+PY
+grep -q "operability polar" "$TMP/stdout.txt" || fail "no polar lines on stdout"
+
+# RAO files have no oblique-sea motions: the polar is refused there.
+cp "$ROOT/examples/data/synthetic_catamaran_rao.csv" "$TMP/rao.csv"
+cat > "$TMP/from_csv.yaml" <<YAML
+rao_csv: rao.csv
+hull_extent: { cg_to_transom_m: 18.0, cg_to_bow_m: 24.0 }
+seas: [ { Hs_m: 1.0, Tz_s: 5.5 } ]
+operability:
+  scatter_csv: route.csv
+  criteria: [ { msi_max_pct: 20 } ]
+  polar: { speeds_kn: [10], headings_deg: [180], criteria: [ { roll_rms_max_deg: 4 } ] }
+YAML
+if (cd "$TMP" && "$HULLOPT" evaluate from_csv.yaml --out out2 > /dev/null 2> err2.txt); then
+  fail "a polar on RAO files was accepted"
+fi
+grep -q "key 'operability.polar': the polar computes the motions in oblique seas" "$TMP/err2.txt" \
+  || fail "unexpected message: $(cat "$TMP/err2.txt")"
+echo "evaluate_polar: ok"
