@@ -45,53 +45,11 @@ struct HeadingRequest {
   double cs = 0.0;
 };
 
-// The hull particulars of the viscous roll damping: L, B, d, Cb, Cm of one hull (hydrostatics at rest), OG =
-// the CG below the waterline; for a multihull every physical body's |y| and waterplane area (a mirror pair
-// twice).
-sk::RollDampingHull RollDampingHullOf(const hull::HullForm& hull, const hull::Hydrostatics& hs, double og_m,
-                                      double rho_kg_m3) {
-  sk::RollDampingHull h;
-  h.length_m = hs.L_m;
-  h.breadth_m = hs.B_m;
-  h.draught_m = hs.T_m;
-  h.block_coefficient = hs.Cb;
-  h.midship_coefficient = hs.Cm;
-  h.og_m = og_m;
-  if (hull.BodyCount() > 1)
-    for (const auto& body : hull.bodies) {
-      hull::HullForm one = hull;
-      one.type = "monohull";
-      one.bodies = {body};
-      one.bodies[0].y_centre_m = 0.0;
-      const double awp = hull::ComputeHydrostatics(one, rho_kg_m3).awp_m2;
-      for (int side = 0; side < (body.y_centre_m > 0.0 ? 2 : 1); ++side) {
-        h.body_offset_m.push_back(body.y_centre_m);
-        h.body_waterplane_m2.push_back(awp);
-      }
-    }
-  return h;
-}
-
-// The roll natural frequency among the solved ones: where ω² (I44 + A44(ω)) − C44 is closest to zero (0 when
-// the hull has no positive roll stiffness).
-double RollNaturalFrequency(const sk::ObliqueStripResult& r) {
-  const double c44 = r.restoring(3, 3);
-  double best = 0.0, miss = 0.0;
-  if (!(c44 > 0.0)) return 0.0;
-  for (const auto& f : r.frequencies) {
-    const double m = std::fabs(f.omega_rad_s * f.omega_rad_s * (r.mass(3, 3) + f.added_mass(3, 3)) - c44);
-    if (best == 0.0 || m < miss) {
-      best = f.omega_rad_s;
-      miss = m;
-    }
-  }
-  return best;
-}
-
 // The RAOs of every heading by the oblique-sea strip theory (sk::SolveObliqueStripTheory) on the strips'
 // own stations, written as rao.csv with a heading column. Yaw's radius of gyration is taken as pitch's.
-void WriteObliqueRaos(const HeadingRequest& req, const sk::StripKernel& geometry,
-                      const eval::DesignCase& design, const hull::Hydrostatics& hs, double U, const io::WaterOptions& water, const std::vector<double>& omega,
+void WriteObliqueRaos(const HeadingRequest& req, const sk::StripKernel& geometry, const eval::DesignCase& design,
+                      const hull::Hydrostatics& hs, double U, const io::WaterOptions& water,
+                      const std::vector<double>& omega,
                       const std::string& hull_name, std::vector<std::string> notes,
                       const std::string& out_dir) {
   std::vector<sk::ObliqueStripStation> stations;
@@ -106,7 +64,7 @@ void WriteObliqueRaos(const HeadingRequest& req, const sk::StripKernel& geometry
     o.roll_damping.model = sk::RollDampingModel::kIkeda;
     o.roll_damping.roll_amplitude_rad = req.roll_amplitude_deg * M_PI / 180.0;
     o.roll_damping.damping_cs = req.cs;
-    o.roll_damping_hull = RollDampingHullOf(design.hull, hs, -m.z_g_m, water.rho_kg_m3);
+    o.roll_damping_hull = eval::RollDampingHullOf(design.hull, hs, -m.z_g_m, water.rho_kg_m3);
   }
   sk::ObliqueStripResult r;
   int roll_flags = 0;
@@ -120,7 +78,7 @@ void WriteObliqueRaos(const HeadingRequest& req, const sk::StripKernel& geometry
   // The viscous roll damping: what was used, its size at the roll resonance, and where the hull lies outside
   // the method's range (a warning in every output).
   std::ostringstream rd;
-  const double wn = RollNaturalFrequency(r);
+  const double wn = eval::RollNaturalFrequency(r);
   if (!req.roll_damping) {
     rd << "roll damping: potential only (solver.roll_damping: none): roll near its resonance is too large";
   } else {

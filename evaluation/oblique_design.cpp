@@ -5,6 +5,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "parametric_hull/hydrostatics.h"
+
 namespace hullopt::eval {
 
 double DefaultRollRadiusOfGyration(const hull::HullForm& hull) {
@@ -39,6 +41,44 @@ sk::ObliqueStripResult SolveObliqueDesign(const DesignCase& design, double speed
   const std::vector<sk::ObliqueStripStation> stations =
       sk::ObliqueStripStations(design.running_hull, design.solver.rao.Geometry());
   return sk::SolveObliqueStripTheory(stations, mass, omega_rad_s, headings_deg, options);
+}
+
+sk::RollDampingHull RollDampingHullOf(const hull::HullForm& hull, const hull::Hydrostatics& hs, double og_m,
+                                      double rho_kg_m3) {
+  sk::RollDampingHull h;
+  h.length_m = hs.L_m;
+  h.breadth_m = hs.B_m;
+  h.draught_m = hs.T_m;
+  h.block_coefficient = hs.Cb;
+  h.midship_coefficient = hs.Cm;
+  h.og_m = og_m;
+  if (hull.BodyCount() > 1)
+    for (const auto& body : hull.bodies) {
+      hull::HullForm one = hull;
+      one.type = "monohull";
+      one.bodies = {body};
+      one.bodies[0].y_centre_m = 0.0;
+      const double awp = hull::ComputeHydrostatics(one, rho_kg_m3).awp_m2;
+      for (int side = 0; side < (body.y_centre_m > 0.0 ? 2 : 1); ++side) {
+        h.body_offset_m.push_back(body.y_centre_m);
+        h.body_waterplane_m2.push_back(awp);
+      }
+    }
+  return h;
+}
+
+double RollNaturalFrequency(const sk::ObliqueStripResult& r) {
+  const double c44 = r.restoring(3, 3);
+  double best = 0.0, miss = 0.0;
+  if (!(c44 > 0.0)) return 0.0;
+  for (const auto& f : r.frequencies) {
+    const double m = std::fabs(f.omega_rad_s * f.omega_rad_s * (r.mass(3, 3) + f.added_mass(3, 3)) - c44);
+    if (best == 0.0 || m < miss) {
+      best = f.omega_rad_s;
+      miss = m;
+    }
+  }
+  return best;
 }
 
 }  // namespace hullopt::eval

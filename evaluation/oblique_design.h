@@ -6,6 +6,7 @@
 
 #include "evaluation/design_case.h"
 #include "seakeeping/motions/oblique_strip_theory.h"
+#include "seakeeping/motions/roll_damping.h"
 
 namespace hullopt::eval {
 
@@ -26,5 +27,15 @@ sk::ObliqueStripResult SolveObliqueDesign(const DesignCase& design, double speed
                                           const std::vector<double>& omega_rad_s,
                                           const std::vector<double>& headings_deg, double kxx_m,
                                           sk::ObliqueStripOptions options = {});
+
+/// The hull particulars of the viscous roll damping (seakeeping/motions/roll_damping.h): L, B, d, Cb, Cm of one
+/// hull from `hs` (hydrostatics at rest), OG = og_m (the CG below the waterline, positive down); for a
+/// multihull every physical body's |y| and waterplane area (a mirror pair twice).
+sk::RollDampingHull RollDampingHullOf(const hull::HullForm& hull, const hull::Hydrostatics& hs, double og_m,
+                                      double rho_kg_m3);
+
+/// The roll natural frequency among the solved encounter frequencies: where ω² (I44 + A44(ω)) − C44 is closest
+/// to zero (0 when the hull has no positive roll stiffness).
+double RollNaturalFrequency(const sk::ObliqueStripResult& r);
 
 }  // namespace hullopt::eval

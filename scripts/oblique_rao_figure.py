@@ -1,10 +1,16 @@
 #!/usr/bin/python3
-"""RAOs of all five modes over headings 90-180 deg for the Table 1 monohull MONa (Davis & Holloway 2003,
-configs/davis-holloway-2003/hull14_MONa.yaml) at 1000 t and 40 kn, from `hullopt rao` with solver.headings_deg
-(oblique-sea strip theory with the STF speed terms; roll with potential damping only). Writes
-docs/figures/oblique_rao_mona_40kn.svg and prints the peak of each mode per heading.
-Usage: scripts/oblique_rao_figure.py [HULLOPT_BINARY]   (run from the repository root; default build/app/hullopt)
-The mass block is assumed (the config gives none): KG 4.0 m (GM_T about 2 m), kyy 0.25 L, kxx 0.35 B (default).
+"""RAOs of all five modes over headings 90-180 deg at 1000 t and 40 kn, from `hullopt rao` with
+solver.headings_deg (oblique-sea strip theory with the STF speed terms), for
+- mona (default): the Table 1 monohull MONa (Davis & Holloway 2003, configs/davis-holloway-2003/hull14_MONa.yaml),
+  roll with potential damping only: docs/figures/oblique_rao_mona_40kn.svg;
+- dut372: the Delft 372 catamaran form of Table 1 at ship scale (the hull of configs/polar-dut372-40kn.yaml),
+  roll with the viscous roll damping of solver.roll_damping: ikeda (for a catamaran the demihulls' Cs heave
+  damping at their offsets, Cs 0.024): docs/figures/oblique_rao_dut372_40kn.svg.
+Prints the peak of each mode per heading.
+Usage: scripts/oblique_rao_figure.py [--hull mona|dut372] [HULLOPT_BINARY]   (from the repository root; default
+build/app/hullopt)
+The mass blocks are assumed (Table 1 gives none): MONa KG 4.0 m (GM_T about 2 m); DUT372 KG 6.0 m; kyy 0.25 L,
+kxx 0.35 × the overall beam (defaults).
 """
 import csv
 import os
@@ -13,17 +19,44 @@ import sys
 import tempfile
 
 ROOT = os.path.abspath(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
-BIN = sys.argv[1] if len(sys.argv) > 1 else os.path.join(ROOT, "build", "app", "hullopt")
+ARGS = sys.argv[1:]
+HULL = "mona"
+if len(ARGS) >= 2 and ARGS[0] == "--hull":
+    HULL, ARGS = ARGS[1], ARGS[2:]
+if HULL not in ("mona", "dut372"):
+    sys.exit("oblique_rao_figure.py: --hull must be mona or dut372")
+BIN = ARGS[0] if ARGS else os.path.join(ROOT, "build", "app", "hullopt")
+TITLE = {"mona": "MONa (Table 1 monohull), 1000 t, 40 kn (Fn 0.60): RAOs over headings, oblique-sea strip theory "
+                 "(STF), no viscous roll damping",
+         "dut372": "DUT372 (Table 1 Delft 372 catamaran form), 1000 t, 40 kn (Fn 0.80): RAOs over headings, "
+                   "oblique-sea strip theory (STF), demihulls' Cs roll damping"}[HULL]
+ROLL_LABEL = {"mona": "roll |x4|/kA (potential damping only)",
+              "dut372": "roll |x4|/kA (potential + demihulls' Cs damping)"}[HULL]
 HEADINGS = [180, 165, 150, 135, 120, 105, 90]
 MODES = [("heave_amp", "heave |x3|/A"), ("pitch_amp", "pitch |x5|/kA"), ("sway_amp", "sway |x2|/A"),
-         ("roll_amp", "roll |x4|/kA (potential damping only)"), ("yaw_amp", "yaw |x6|/kA")]
+         ("roll_amp", ROLL_LABEL), ("yaw_amp", "yaw |x6|/kA")]
 COLOURS = ["#1f77b4", "#ff7f0e", "#2ca02c", "#d62728", "#9467bd", "#8c564b", "#17becf"]
 
 
-def run():
+def config():
+    if HULL == "dut372":
+        hull = open(os.path.join(ROOT, "configs", "polar-dut372-40kn.yaml")).read()
+        hull = "hull:" + hull.split("hull:", 1)[1].split("water:")[0]
+        return hull + """water: { rho_kg_m3: 1025, g_m_s2: 9.81 }
+speed: { kn: 40 }
+mass: { kg_m: 6.0 }
+solver:
+  method: strip_theory_stf
+  Cs: 0.024
+  sections: 24
+  panels: 8
+  headings_deg: [%s]
+  roll_damping: ikeda
+  frequencies: { range: { quantity: lambda_over_L, from: 0.4, to: 4.0, count: 60 } }
+""" % ", ".join(str(h) for h in HEADINGS)
     hull = open(os.path.join(ROOT, "configs", "davis-holloway-2003", "hull14_MONa.yaml")).read()
     hull = hull.split("water:")[0]  # the hull block; water and speed below
-    cfg = hull + """water: { rho_kg_m3: 1025, g_m_s2: 9.81 }
+    return hull + """water: { rho_kg_m3: 1025, g_m_s2: 9.81 }
 speed: { kn: 40 }
 mass: { kg_m: 4.0 }
 solver:
@@ -32,8 +65,12 @@ solver:
   roll_damping: none
   frequencies: { range: { quantity: lambda_over_L, from: 0.4, to: 4.0, count: 60 } }
 """ % ", ".join(str(h) for h in HEADINGS)
+
+
+def run():
+    cfg = config()
     with tempfile.TemporaryDirectory() as tmp:
-        path = os.path.join(tmp, "mona.yaml")
+        path = os.path.join(tmp, HULL + ".yaml")
         open(path, "w").write(cfg)
         subprocess.run([BIN, "rao", path, "--out", os.path.join(tmp, "out"), "--quiet"], check=True)
         lines = [l for l in open(os.path.join(tmp, "out", "rao.csv")) if not l.startswith("#")]
@@ -45,8 +82,7 @@ def svg(rows, notes):
     w, h, pw, ph, left, top = 1180, 760, 330, 260, 60, 50
     out = ['<svg xmlns="http://www.w3.org/2000/svg" width="%d" height="%d" font-family="sans-serif" font-size="11">'
            % (w, h), '<rect width="100%" height="100%" fill="white"/>',
-           '<text x="%d" y="22" font-size="14">MONa (Table 1 monohull), 1000 t, 40 kn (Fn 0.60): RAOs over headings, '
-           'oblique-sea strip theory (STF), no viscous roll damping</text>' % left]
+           '<text x="%d" y="22" font-size="14">%s</text>' % (left, TITLE)]
     for m, (key, label) in enumerate(MODES):
         x0 = left + (m % 3) * (pw + 40)
         y0 = top + (m // 3) * (ph + 70)
@@ -83,7 +119,7 @@ def svg(rows, notes):
 
 def main():
     rows, notes = run()
-    dst = os.path.join(ROOT, "docs", "figures", "oblique_rao_mona_40kn.svg")
+    dst = os.path.join(ROOT, "docs", "figures", "oblique_rao_%s_40kn.svg" % HULL)
     open(dst, "w").write(svg(rows, notes))
     print("wrote", os.path.relpath(dst, ROOT))
     for hd in HEADINGS:
