@@ -35,7 +35,7 @@ SingleDesign EvaluateSingleDesign(io::YamlMap& root, const std::string& name, co
                                   bool strict, const std::function<void()>& before_work) {
   SingleDesign s;
   const std::string& config = root.file();
-  io::SkipCampaignBlocks(root, &s.notes);
+  io::SkipCampaignBlocks(root, &s.notes, command);
   io::FillDefaultSeas(root, &s.notes);
   CheckSingleDesignConfig(root, name, strict);
   io::FillDefaultFrequencies(root, &s.notes);

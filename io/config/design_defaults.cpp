@@ -21,11 +21,11 @@ YAML::Node DefaultSeas() {
   return seas;
 }
 
-void SkipCampaignBlocks(YamlMap& root, std::vector<std::string>* notes) {
+void SkipCampaignBlocks(YamlMap& root, std::vector<std::string>* notes, const std::string& own_command) {
   for (const char* k : {"optimize", "explore", "calibrate", "section", "resistance", "evaluate"}) {
     if (!root.Has(k)) continue;
     root.Skip(k);
-    if (notes) notes->push_back(std::string("key '") + k + "' belongs to another command: skipped");
+    if (notes && k != own_command) notes->push_back(std::string("key '") + k + "' belongs to another command: skipped");
   }
 }
 

@@ -19,8 +19,9 @@ namespace hullopt::io {
 YAML::Node DefaultSeas();
 
 /// Marks the blocks of other commands (optimize, explore, calibrate, section, resistance, evaluate) as read,
-/// one note each: a campaign config or best.yaml runs as the design it describes.
-void SkipCampaignBlocks(YamlMap& root, std::vector<std::string>* notes);
+/// one note each but for own_command's block (the command that runs the config, e.g. a campaign's report of
+/// its own baseline): a campaign config or best.yaml runs as the design it describes.
+void SkipCampaignBlocks(YamlMap& root, std::vector<std::string>* notes, const std::string& own_command = "");
 
 /// Fills root's raw tree in place: `seas` when absent, `solver.frequencies` when absent (the hull at rest is
 /// built once to find L and U, without mass or running attitude; its errors are left to the real read).

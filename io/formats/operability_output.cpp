@@ -1,7 +1,6 @@
 #include "io/formats/operability_output.h"
 
 #include <cmath>
-#include <fstream>
 #include <iomanip>
 #include <sstream>
 #include <nlohmann/json.hpp>
@@ -22,8 +21,9 @@ std::vector<std::string> WriteOperabilityOutputs(const std::string& dir, const s
                                                  const std::vector<sk::OperabilityCriterion>& criteria,
                                                  const std::string& scatter_source) {
   const std::string csv = dir + "/operability.csv", js = dir + "/operability.json";
-  std::ofstream f(csv);
-  if (!f) throw InputError("cannot write " + csv);
+  // Both files are built whole and only then written, each atomically: a failure (a non-finite value) leaves
+  // no half-written table behind, and neither file is written without the other's content ready.
+  std::ostringstream f;
   f << "design,Hs_m," << (diagram.period_is_tp ? "Tp_s" : "Tz_s")
     << ",probability,msi_mean_pct,msi_forward_pct,msi_lcg_pct,msi_transom_pct,rms_accel_forward_g,"
        "rms_accel_lcg_g,rms_accel_transom_g";
@@ -49,14 +49,13 @@ std::vector<std::string> WriteOperabilityOutputs(const std::string& dir, const s
     nlohmann::json jd;
     jd["design"] = d.name;
     jd["weighted_mean_msi_pct"] = Finite(d.result.weighted_mean_msi_pct, "mean MSI");
-    for (size_t k = 0; k < criteria.size(); ++k) jd["criterion_time_pct"][criteria[k].name] = d.result.criterion_time_pct[k];
-    jd["all_criteria_time_pct"] = d.result.all_criteria_time_pct;
+    for (size_t k = 0; k < criteria.size(); ++k)
+      jd["criterion_time_pct"][criteria[k].name] = Finite(d.result.criterion_time_pct[k], "criterion time share");
+    jd["all_criteria_time_pct"] = Finite(d.result.all_criteria_time_pct, "time share");
     j["designs"].push_back(jd);
   }
-  if (!f) throw InputError("cannot write " + csv);
-  std::ofstream g(js);
-  g << j.dump(2) << "\n";
-  if (!g) throw InputError("cannot write " + js);
+  WriteFileAtomically(csv, f.str());
+  WriteFileAtomically(js, j.dump(2) + "\n");
   return {"operability.csv", "operability.json"};
 }
 
