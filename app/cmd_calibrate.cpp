@@ -1,4 +1,5 @@
-// hullopt calibrate CONFIG --out DIR: fits the damping coefficient Cs to tank RAOs (docs/calibration.md).
+// hullopt calibrate CONFIG --out DIR: fits the damping coefficient Cs to tank RAOs (docs/calibration.md). Linked
+// into hullopt-calibrate and the Python module only (app/calibrate_command.h).
 #include <glog/logging.h>
 
 #include <cctype>
@@ -8,7 +9,7 @@
 #include <iostream>
 #include <stdexcept>
 
-#include "app/commands.h"
+#include "app/calibrate_command.h"
 #include "app/output_dir.h"
 #include "app/output_options.h"
 #include "app/run_checks.h"
@@ -44,6 +45,8 @@ std::string FileLabel(const std::string& label) {
   }
   return s;
 }
+
+}  // namespace
 
 void RunCalibrate(const std::string& config_file, const std::string& out_dir) {
   io::YamlMap root = io::YamlMap::LoadFile(config_file);
@@ -133,16 +136,6 @@ void RunCalibrate(const std::string& config_file, const std::string& out_dir) {
   Out() << "wrote " << out_dir << "/{calibration.json, calibration_report.txt, calibration_plot.svg";
   for (const auto& s : snippets) Out() << ", " << s;
   Out() << ", config.resolved.yaml, VERSION}\n";
-}
-
-}  // namespace
-
-void AddCalibrateCommand(CLI::App& app) {
-  AddConfigCommand(app,
-                   {"calibrate",
-                    "Fit the sectional damping coefficient Cs to measured heave and pitch RAOs (tank RAO CSV files)",
-                    "YAML config with a 'calibrate:' section", "CONFIG"},
-                   RunCalibrate);
 }
 
 }  // namespace hullopt::app

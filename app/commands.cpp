@@ -1,6 +1,7 @@
 #include "app/commands.h"
 
 #include <CLI/CLI.hpp>
+#include <cstring>
 #include <memory>
 
 #include "app/output_dir.h"
@@ -29,6 +30,29 @@ CLI::App* AddConfigCommand(CLI::App& app, const CommandText& text,
   return cmd;
 }
 
+namespace {
+
+// --force on the commands that run the strip solver (they estimate its cost first, app/run_checks.h), --quiet
+// on every command (campaigns have their own), --no-plots on the single-run commands that draw figures
+// (campaigns: AddCampaignCommand); each on those of the named commands the app has.
+void AddCommonOptions(CLI::App& app) {
+  const auto named = [&app](const char* name) -> CLI::App* {
+    for (CLI::App* command : app.get_subcommands({}))
+      if (command->get_name() == name) return command;
+    return nullptr;
+  };
+  ResetForceOption();
+  for (const char* name : {"section", "rao", "coefficients", "design", "evaluate", "optimize", "explore", "calibrate"})
+    if (CLI::App* command = named(name)) AddForceOption(command);
+  ResetOutputOptions();
+  for (CLI::App* command : app.get_subcommands({}))
+    if (command->get_option_no_throw("--quiet") == nullptr) AddQuietOption(command);
+  for (const char* name : {"rao", "design", "evaluate"})
+    if (CLI::App* command = named(name)) AddNoPlotsOption(command);
+}
+
+}  // namespace
+
 void AddAllCommands(CLI::App& app) {
   AddHullCommand(app);
   AddSectionCommand(app);
@@ -40,16 +64,12 @@ void AddAllCommands(CLI::App& app) {
   AddExploreCommand(app);
   AddCalibrateCommand(app);
   AddResistanceCommand(app);
-  // The commands that run the strip solver estimate its cost first (app/run_checks.h).
-  ResetForceOption();
-  for (const char* name : {"section", "rao", "coefficients", "design", "evaluate", "optimize", "explore", "calibrate"})
-    AddForceOption(app.get_subcommand(name));
-  // --quiet on every command (campaigns have their own), --no-plots on the single-run commands that draw
-  // figures (campaigns: AddCampaignCommand).
-  ResetOutputOptions();
-  for (CLI::App* command : app.get_subcommands({}))
-    if (command->get_option_no_throw("--quiet") == nullptr) AddQuietOption(command);
-  for (const char* name : {"rao", "design", "evaluate"}) AddNoPlotsOption(app.get_subcommand(name));
+  AddCommonOptions(app);
+}
+
+void AddCalibrateCommandAlone(CLI::App& app) {
+  AddCalibrateCommand(app);
+  AddCommonOptions(app);
 }
 
 }  // namespace hullopt::app

@@ -29,9 +29,12 @@ void AddEvaluateCommand(CLI::App& app);
 void AddDesignCommand(CLI::App& app);
 void AddOptimizeCommand(CLI::App& app);
 void AddExploreCommand(CLI::App& app);
+/// `hullopt calibrate`: registers the command; its run is RunCalibrate (app/calibrate_command.h).
 void AddCalibrateCommand(CLI::App& app);
 void AddResistanceCommand(CLI::App& app);
 void AddCoefficientsCommand(CLI::App& app);
 /// All of the above, in the order of `hullopt --help` (the executable and the Python module's run()).
 void AddAllCommands(CLI::App& app);
+/// The calibrate command alone, with the options AddAllCommands gives it (the executable hullopt-calibrate).
+void AddCalibrateCommandAlone(CLI::App& app);
 }  // namespace hullopt::app

@@ -1,15 +1,22 @@
 // hullopt: hull-form optimisation for high-speed vessels in head seas.
 #include <CLI/CLI.hpp>
 #include <chrono>
+#include <cstring>
 #include <iostream>
 #include <thread>
 
+#include "app/calibrate_command.h"
 #include "app/commands.h"
 #include "app/mpi_context.h"
 #include "hullopt/version.h"
 #include "io/formats/input_error.h"
 
 int main(int argc, char** argv) {
+#ifndef HULLOPT_CALIBRATE_EXECUTABLE
+  // `hullopt calibrate ...` runs in hullopt-calibrate, the executable that links the Cs fit's libraries (Ceres),
+  // so that no other command loads them (app/calibrate_command.h).
+  if (argc > 1 && std::strcmp(argv[1], "calibrate") == 0) return hullopt::app::ExecCalibrateExecutable(argv);
+#endif
   hullopt::app::MpiInit(&argc, &argv);
   CLI::App app{
       "hullopt — hull-form optimisation of high-speed vessels for seakeeping (time-domain strip theory, "
@@ -20,7 +27,11 @@ int main(int argc, char** argv) {
   app.set_version_flag("--version", std::string("hullopt ") + hullopt::kVersion);
 #endif
   app.require_subcommand(1);
+#ifdef HULLOPT_CALIBRATE_EXECUTABLE
+  hullopt::app::AddCalibrateCommandAlone(app);
+#else
   hullopt::app::AddAllCommands(app);
+#endif
   int code = 0;
   std::string message;
   try {

@@ -14,12 +14,17 @@
 # whole sections (docs/performance.md, "Against PDStrip").
 #
 # Usage: PDSTRIP=/path/to/pdstrip bash bench/pdstrip_ratio.sh [ROUNDS]
-#        (hullopt binary: $HULLOPT, default build/app/hullopt)
+#        (hullopt binary: $HULLOPT, default build/app/hullopt; HULLOPT_BEFORE=/path/to/another/hullopt adds its
+#        run to every round, e.g. a build from before a change, and prints its medians and the ratio beside them)
+# Times come from wait4(2) (wall from a monotonic clock around it, CPU = user + system from the child's rusage,
+# both to the microsecond), so a hullopt run of a few tens of milliseconds is resolved.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 rounds=${1:-5}
 pdstrip=${PDSTRIP:?set PDSTRIP to a PDStrip binary built from its public source (see the header of this script)}
 hullopt=$(realpath "${HULLOPT:-build/app/hullopt}")
+before=""
+[ -n "${HULLOPT_BEFORE:-}" ] && before=$(realpath "$HULLOPT_BEFORE")
 pdstrip=$(realpath "$pdstrip")
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
@@ -47,22 +52,38 @@ solver:
   frequencies: { lambda_over_L: [$(echo $lams | sed 's/ /, /g')] }
 EOF
 
-timed() {  # out-file, command...: appends "wall cpu" of one run
+timed() {  # out-file, command...: appends "wall cpu" of one run, in seconds
   local out=$1; shift
-  /usr/bin/time -f "%e %U %S" -o "$work/t" "$@" > /dev/null 2>&1 || { echo "failed: $*" >&2; exit 1; }
-  awk '{ printf "%s %.3f\n", $1, $2 + $3 }' "$work/t" >> "$out"
+  python3 -c '
+import os, subprocess, sys, time
+start = time.perf_counter()
+child = subprocess.Popen(sys.argv[1:], stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+_, status, usage = os.wait4(child.pid, 0)
+wall = time.perf_counter() - start
+if status != 0: sys.exit(1)
+print("%.6f %.6f" % (wall, usage.ru_utime + usage.ru_stime))' "$@" >> "$out" || { echo "failed: $*" >&2; exit 1; }
 }
 for r in $(seq "$rounds"); do
   rm -rf "$work/h"
   (cd "$work/pd" && timed "$work/pdstrip.times" env OMP_NUM_THREADS=1 "$pdstrip" pdstrip.inp)
   grep -q "Abs" "$work/pd/pdstrip.out" || { echo "PDStrip wrote no transfer functions:" >&2; tail -3 "$work/pd/pdstrip.out" >&2; exit 1; }
   timed "$work/hullopt.times" env OMP_NUM_THREADS=1 "$hullopt" rao "$work/demihull.yaml" --out "$work/h" --quiet --no-plots
+  if [ -n "$before" ]; then
+    rm -rf "$work/b"
+    timed "$work/before.times" env OMP_NUM_THREADS=1 "$before" rao "$work/demihull.yaml" --out "$work/b" --quiet --no-plots
+  fi
 done
 median() { sort -g | awk '{ v[NR] = $1 } END { print (NR % 2) ? v[(NR + 1) / 2] : (v[NR / 2] + v[NR / 2 + 1]) / 2 }'; }
 pw=$(cut -d' ' -f1 "$work/pdstrip.times" | median); pc=$(cut -d' ' -f2 "$work/pdstrip.times" | median)
 hw=$(cut -d' ' -f1 "$work/hullopt.times" | median); hc=$(cut -d' ' -f2 "$work/hullopt.times" | median)
 echo "Delft 372 demihull, 40 sections x 14 panels, 37 wavelengths, Fn 0.75, one thread, $rounds paired rounds," \
   "$(nproc --all) cores, load $(cut -d' ' -f1 /proc/loadavg)"
-printf '%-8s median wall %8.3f s  median CPU %8.3f s\n' PDStrip "$pw" "$pc" hullopt "$hw" "$hc"
-awk -v pw="$pw" -v pc="$pc" -v hw="$hw" -v hc="$hc" 'BEGIN { if (hc < 0.001) hc = 0.001
-  printf "ratio PDStrip / hullopt: wall %.0fx, CPU %.0fx (CPU times are counted in 10 ms ticks)\n", pw / hw, pc / hc }'
+printf '%-8s median wall %8.4f s  median CPU %8.4f s\n' PDStrip "$pw" "$pc" hullopt "$hw" "$hc"
+awk -v pw="$pw" -v pc="$pc" -v hw="$hw" -v hc="$hc" \
+  'BEGIN { printf "ratio PDStrip / hullopt: wall %.0fx, CPU %.0fx\n", pw / hw, pc / hc }'
+if [ -n "$before" ]; then
+  bw=$(cut -d' ' -f1 "$work/before.times" | median); bc=$(cut -d' ' -f2 "$work/before.times" | median)
+  printf '%-8s median wall %8.4f s  median CPU %8.4f s  (HULLOPT_BEFORE=%s)\n' before "$bw" "$bc" "$before"
+  awk -v pw="$pw" -v pc="$pc" -v hw="$bw" -v hc="$bc" \
+    'BEGIN { printf "ratio PDStrip / before: wall %.0fx, CPU %.0fx\n", pw / hw, pc / hc }'
+fi

@@ -8,6 +8,7 @@
 
 #include "seakeeping/green/cerf_wrap.h"
 #include "seakeeping/green/complex_log.h"
+#include "seakeeping/green/dawson_integral_table.h"
 #include "seakeeping/green/unit_arctangent.h"
 
 #if defined(__SSE2__)
@@ -85,64 +86,14 @@ cd Dawson(cd x) {
 
 namespace {
 
-// Table of Φ and F on the grid x = (i + i·j)·h, 0 <= i, j <= kGridN, covering the first quadrant of |x| < 6.
-// Between nodes Φ(x0 + δ) = Φ(x0) + Σ_k F⁽ᵏ⁾(x0) δ^{k+1}/(k+1)!, with F' = 1 − 2xF and
-// F⁽ᵏ⁺¹⁾ = −2x F⁽ᵏ⁾ − 2k F⁽ᵏ⁻¹⁾. With h = 0.05, |δ| <= 0.036 and 2|x||δ| <= 0.43, 11 terms reach a few 1e−15
-// relative (measured against quadrature of F over the quadrant: 9 terms 1e−12, 10 terms 3e−14); a 0.1 grid
-// needed 18, and the shorter Horner chain outweighs the larger table (3 MB, ~1.2 MB of it in the sector
-// 0 <= arg x <= π/4 the kernel uses). The Taylor
-// coefficients c_0 = Φ(x0), c_{k+1} = F⁽ᵏ⁾(x0)/(k+1)! are stored per node, so that evaluation is Horner's rule
-// (Φ = Σ c_k δ^k, F = Φ' = Σ k c_k δ^{k−1}): this lookup is the hot spot of the strip-kernel build.
-constexpr double kGridStep = 0.05;
-constexpr double kInvGridStep = 20.0;
-constexpr int kGridN = 122;
-constexpr int kTaylorTerms = 11;
-constexpr int kCoefficients = kTaylorTerms + 2;  // c_0 .. c_{T+1}
-struct PhiTable {
-  std::vector<cd> coef;  // node-major, kCoefficients per node
-  cd* At(int i, int j) { return &coef[static_cast<std::size_t>((i * (kGridN + 1) + j) * kCoefficients)]; }
-  // Σ_{k>=1} c_k δ^k = Φ(x0 + δ) − Φ(x0) from the node's F coefficients.
-  static cd Increment(const cd* c, cd d) {
-    cd sum = c[kCoefficients - 1];
-    for (int k = kCoefficients - 2; k >= 1; --k) sum = sum * d + c[k];
-    return sum * d;
-  }
-  // Φ at node (i, j) from Φ at its neighbour (i0, j0): the integral of F over each half of the step from the
-  // Taylor series of the nearer node (|δ| = h/2, inside the series' accuracy radius).
-  void Step(int i0, int j0, int i, int j) {
-    const cd d(0.5 * (i - i0) * kGridStep, 0.5 * (j - j0) * kGridStep);
-    cd* c = At(i, j);
-    c[0] = At(i0, j0)[0] + Increment(At(i0, j0), d) - Increment(c, -d);
-  }
-  // F and its derivatives from libcerf at every node (the only special-function calls), then Φ by
-  // integrating F along the real axis and up each column: ~4000 Dawson calls instead of a quadrature per
-  // node, so that start-up is not spent here (a few ms once; each step adds ~1e−16 relative).
-  PhiTable() : coef(static_cast<std::size_t>((kGridN + 1) * (kGridN + 1) * kCoefficients)) {
-    for (int i = 0; i <= kGridN; ++i)
-      for (int j = 0; j <= kGridN; ++j) {
-        const cd x(i * kGridStep, j * kGridStep);
-        cd* c = At(i, j);
-        cd fk_prev = Dawson(x), fk = 1.0 - 2.0 * x * fk_prev;  // F⁽⁰⁾, F⁽¹⁾
-        double factorial = 1.0;                                // (k+1)!
-        c[1] = fk_prev;
-        for (int k = 1; k <= kTaylorTerms; ++k) {
-          factorial *= (k + 1);
-          c[k + 1] = fk / factorial;
-          const cd next = -2.0 * x * fk - 2.0 * k * fk_prev;
-          fk_prev = fk;
-          fk = next;
-        }
-      }
-    At(0, 0)[0] = 0.0;  // Φ(0)
-    for (int i = 1; i <= kGridN; ++i) Step(i - 1, 0, i, 0);
-    for (int i = 0; i <= kGridN; ++i)
-      for (int j = 1; j <= kGridN; ++j) Step(i, j - 1, i, j);
-  }
-};
-const PhiTable& Table() {
-  static const PhiTable table;  // thread-safe initialisation (C++11), once
-  return table;
-}
+// Φ and F below |x| = 6 from the table of seakeeping/green/dawson_integral_table.h (Taylor coefficients per
+// node, evaluated by Horner's rule): this lookup is the hot spot of the strip-kernel build. The table is embedded
+// in the library (computed when hullopt is built).
+using dawson_table::kCoefficients;
+using dawson_table::kGridStep;
+using dawson_table::kInvGridStep;
+using dawson_table::NodeOffset;
+using dawson_table::Table;
 
 const cd* NodeCoefficients(const cd* table, cd x, cd* delta) {
   // x is in the first quadrant: rounding by +0.5 truncation (cheaper than lround on this hot path).
@@ -151,10 +102,9 @@ const cd* NodeCoefficients(const cd* table, cd x, cd* delta) {
   const int i = static_cast<int>(x.real() * kInvGridStep + 0.5);
   const int j = static_cast<int>(x.imag() * kInvGridStep + 0.5);
   *delta = x - cd(i * kGridStep, j * kGridStep);
-  return table + static_cast<std::size_t>((i * (kGridN + 1) + j) * kCoefficients);
+  return table + NodeOffset(i, j);
 }
-// The same with the table looked up here (one guarded static per call; the block forms below look it up once).
-const cd* NodeCoefficients(cd x, cd* delta) { return NodeCoefficients(Table().coef.data(), x, delta); }
+const cd* NodeCoefficients(cd x, cd* delta) { return NodeCoefficients(Table(), x, delta); }
 
 // Horner's rule in real arithmetic: std::complex multiplication carries a NaN/infinity recovery branch
 // (C99 Annex G) on every step; the values here are finite, and the products are the same.
@@ -217,7 +167,7 @@ inline cd Store(__m128d v) {
 
 template <int L>
 void DawsonIntegralTableOnlyN(const cd* x, cd* phi) {
-  const cd* table = Table().coef.data();
+  const cd* table = Table();
   const cd* c[L];
 #if defined(__SSE2__)
   __m128d d_re[L], d_im[L], p[L];
@@ -251,7 +201,7 @@ void DawsonIntegralTableOnlyN(const cd* x, cd* phi) {
 template <int L>
 void DawsonIntegralTableN(const cd* x, PhiAndF* out) {
   constexpr int M = kCoefficients - 1;
-  const cd* table = Table().coef.data();
+  const cd* table = Table();
   const cd* c[L];
 #if defined(__SSE2__)
   __m128d d_re[L], d_im[L], p[L], f[L];
@@ -327,7 +277,7 @@ __attribute__((target("avx"))) inline void Offsets2(cd d0, cd d1, __m256d* d_re,
 // to hide the latency of a complex step (shuffle, multiply, two adds); with two registers it is latency-bound.
 template <int H>
 __attribute__((target("avx"))) void DawsonIntegralTableOnlyAvx(const cd* x, cd* phi) {
-  const cd* table = Table().coef.data();
+  const cd* table = Table();
   const cd* c[2 * H];
   cd d[2 * H];
   for (int n = 0; n < 2 * H; ++n) c[n] = NodeCoefficients(table, x[n], &d[n]);
@@ -344,7 +294,7 @@ __attribute__((target("avx"))) void DawsonIntegralTableOnlyAvx(const cd* x, cd* 
 template <int H>
 __attribute__((target("avx"))) void DawsonIntegralTableAvx(const cd* x, PhiAndF* out) {
   constexpr int M = kCoefficients - 1;
-  const cd* table = Table().coef.data();
+  const cd* table = Table();
   const cd* c[2 * H];
   cd d[2 * H];
   for (int n = 0; n < 2 * H; ++n) c[n] = NodeCoefficients(table, x[n], &d[n]);

@@ -83,5 +83,13 @@ expect_error negative_weight "$(cfg "$DELFT" '  weights: { heave: -1 }')" "calib
 expect_error no_model "$(printf 'speed: { Fn: 0.75 }\ncalibrate:\n  data: [%s]\n' "$DELFT")" "missing required key 'hull'"
 expect_error missing_file "$(cfg "$T/nope.csv")" "nope.csv': no such file"
 
+# 4. hullopt runs the command in hullopt-calibrate beside it: without that executable, exit 3 and one line naming it.
+mkdir "$T/alone" && cp "$HULLOPT" "$T/alone/hullopt"
+"$T/alone/hullopt" calibrate examples/calibrate_synthetic.yaml --out "$T/alone/out" > "$T/alone.log" 2>&1
+rc=$?
+check "without hullopt-calibrate: exit 3 (got $rc)" "[ $rc -eq 3 ]"
+check "without hullopt-calibrate: one line naming it ($(head -c 200 "$T/alone.log"))" \
+  "[ \$(wc -l < '$T/alone.log') -eq 1 ] && grep -q '^hullopt: internal error: cannot run $T/alone/hullopt-calibrate' '$T/alone.log'"
+
 [ $fail -eq 0 ] && echo "cli calibrate: all checks passed"
 exit $fail

@@ -9,6 +9,11 @@ trap 'rm -rf "$tmp"' EXIT
 cmake --install "$build_dir" --prefix "$tmp/prefix" > "$tmp/install.log"
 test -f "$tmp/prefix/include/hullopt/hullopt.h"
 test -f "$tmp/prefix/lib/cmake/hullopt/hulloptConfig.cmake"
+# The executables: hullopt and, beside it, hullopt-calibrate, which runs `hullopt calibrate`.
+test -x "$tmp/prefix/bin/hullopt"
+test -x "$tmp/prefix/bin/hullopt-calibrate"
+"$tmp/prefix/bin/hullopt" calibrate examples/calibrate_synthetic.yaml --out "$tmp/calibrate" --quiet
+test -s "$tmp/calibrate/calibration.json"
 # Every installed header is under include/hullopt/, and only those the entry header reaches: no io/ or app/.
 others=$(ls "$tmp/prefix/include" | grep -vx hullopt || true)
 [ -z "$others" ] || { echo "headers installed outside include/hullopt: $others"; exit 1; }
