@@ -91,6 +91,8 @@ struct DesignInput {
   std::string pending_file, pending_label;    // its config file; the cost check's label
   std::vector<std::string> pending_warnings;  // flags of the evaluation's overrides, appended once built
   std::optional<double> kxx_m;                // mass.kxx_m (the operability polar's roll)
+  bool roll_damping = false;                  // solver.roll_damping: ikeda (the polar's viscous roll damping)
+  double roll_amplitude_deg = 5.0;            // solver.roll_amplitude_deg
 };
 
 // A design whose RAOs are computed here by the strip solver from `dc` (read from `file`, whose resolved config
@@ -282,6 +284,8 @@ void Run(const std::string& config_file, const std::string& out_dir) {
     in.design.name = io::ParseDesignName(root, std::filesystem::path(config_file).stem().string());
     in.pending = io::ParseDesign(root, config_file, in.design.name, read);
     in.kxx_m = in.pending->kxx_m;
+    in.roll_damping = in.pending->roll_damping == "ikeda";
+    in.roll_amplitude_deg = in.pending->roll_amplitude_deg;
     in.pending_resolved = root.resolved();
     in.pending_file = config_file;
     in.pending_label = "evaluate";
@@ -360,6 +364,10 @@ void Run(const std::string& config_file, const std::string& out_dir) {
     eval::PolarOptions po = operability.polar.options;
     po.omega_rad_s = in.omega_rad_s;
     po.evaluation = options;
+    if (in.roll_damping) {
+      po.roll_damping.model = sk::RollDampingModel::kIkeda;
+      po.roll_damping.roll_amplitude_rad = in.roll_amplitude_deg * M_PI / 180.0;
+    }
     const double kxx = in.kxx_m ? *in.kxx_m : eval::DefaultRollRadiusOfGyration(in.computed->hull);
     try {
       polar = eval::ComputeOperabilityPolar(*in.computed, kxx, operability.diagram, operability.polar.criteria,
@@ -369,6 +377,26 @@ void Run(const std::string& config_file, const std::string& out_dir) {
     } catch (const std::domain_error& e) {
       throw io::InputError(operability.polar.where + ": " + e.what());
     }
+  }
+
+  // The roll damping's flags (the hull outside the fitted range, a multihull): in every output, each with the
+  // speeds it was raised at when not all.
+  std::vector<std::string> polar_flags;
+  if (polar) {
+    for (const auto& f : polar->roll_damping_flags) {
+      std::string text = "operability polar: " + f.text;
+      if (f.speeds_m_s.size() < operability.polar.speeds_kn.size()) {
+        text += " (at";
+        for (std::size_t i = 0; i < f.speeds_m_s.size(); ++i) {
+          char b[32];
+          std::snprintf(b, sizeof b, "%s %g", i ? "," : "", f.speeds_m_s[i] / kKnot);
+          text += b;
+        }
+        text += " kn)";
+      }
+      polar_flags.push_back(text);
+    }
+    for (const auto& w : polar_flags) designs.front().rao.warnings.push_back(w);
   }
 
   std::vector<io::DesignOperability> operabilities;
@@ -411,8 +439,10 @@ void Run(const std::string& config_file, const std::string& out_dir) {
                       c.source.c_str());
         notes.push_back(b);
       }
-      notes.push_back("Oblique-sea strip theory (STF), roll with potential damping only; running attitude of the "
+      notes.push_back("Oblique-sea strip theory (STF), no Cs damping in heave and pitch; running attitude of the "
                       "design speed at every speed.");
+      notes.push_back("Roll damping: " + polar->roll_damping + ".");
+      for (const auto& f : polar_flags) notes.push_back("Warning: " + f.substr(std::string("operability polar: ").size()));
       io::WriteOperabilityPolarSvg(OutPath(out_dir, "operability_polar.svg"), *polar,
                                    "Operability polar: " + designs.front().name, notes);
       files.push_back("operability_polar.svg");

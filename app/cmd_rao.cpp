@@ -42,7 +42,6 @@ struct HeadingRequest {
   double kxx_m = 0.0;
   bool roll_damping = false;
   double roll_amplitude_deg = 5.0;
-  double cs = 0.0;
 };
 
 // The RAOs of every heading by the oblique-sea strip theory (sk::SolveObliqueStripTheory) on the strips'
@@ -61,10 +60,10 @@ void WriteObliqueRaos(const HeadingRequest& req, const sk::StripKernel& geometry
   o.g_m_s2 = water.g_m_s2;
   o.speed_m_s = U;
   if (req.roll_damping) {
-    o.roll_damping.model = sk::RollDampingModel::kIkeda;
-    o.roll_damping.roll_amplitude_rad = req.roll_amplitude_deg * M_PI / 180.0;
-    o.roll_damping.damping_cs = req.cs;
-    o.roll_damping_hull = eval::RollDampingHullOf(design.hull, hs, -m.z_g_m, water.rho_kg_m3);
+    sk::RollDampingOptions roll;
+    roll.model = sk::RollDampingModel::kIkeda;
+    roll.roll_amplitude_rad = req.roll_amplitude_deg * M_PI / 180.0;
+    eval::SetDesignRollDamping(design, roll, &o);
   }
   sk::ObliqueStripResult r;
   int roll_flags = 0;
@@ -82,14 +81,7 @@ void WriteObliqueRaos(const HeadingRequest& req, const sk::StripKernel& geometry
   if (!req.roll_damping) {
     rd << "roll damping: potential only (solver.roll_damping: none): roll near its resonance is too large";
   } else {
-    rd << "roll damping: ";
-    if (o.roll_damping_hull.Multihull())
-      rd << "the demihulls' Cs heave damping at their offsets (B44 += sum y_i^2 0.5 Cs rho U A_wp,i, Cs = " << req.cs
-         << ")";
-    else
-      rd << "Ikeda's components (Kawahara, Maekawa & Ikeda 2009: skin friction, eddy making, hull lift; no bilge "
-            "keels)";
-    rd << " added to the potential B44, linearised at a roll amplitude of " << req.roll_amplitude_deg << " deg";
+    rd << "roll damping: " << eval::RollDampingNote(o);
     if (wn > 0.0) {
       for (const auto& w : r.waves)
         if (w.omega_e_rad_s == wn) {
@@ -157,7 +149,6 @@ void RunRao(const std::string& config_file, const std::string& out_dir) {
   if (oblique) headings.kxx_m = parsed.kxx_m ? *parsed.kxx_m : eval::DefaultRollRadiusOfGyration(hull);
   headings.roll_damping = parsed.roll_damping == "ikeda";
   headings.roll_amplitude_deg = parsed.roll_amplitude_deg;
-  headings.cs = sc.cs();
   std::optional<io::MeasuredRao> measured;
   if (compare)
     measured = io::ReadRaoComparison(*compare, U / std::sqrt(water.g_m_s2 * hs.L_m), hs.L_m, water.g_m_s2);

@@ -226,6 +226,8 @@ void CampaignRunner::Finish(CampaignResult* result) {
   s["seed"] = def.seed;
   s["best_objective"] = best >= 0 ? nlohmann::json(recs[best].result.objective) : nlohmann::json();
   s["best_evaluation"] = best >= 0 ? nlohmann::json(best) : nlohmann::json();
+  if (const std::string method = campaign_.evaluator->ObjectiveMethod(); !method.empty())
+    s["objective_method"] = method;
   const std::string warnings_line = ReportWarnings(recs, best, journal_->path(), &s);
   if (!warnings_line.empty()) Note(warnings_line);
   const std::string resolution_warning =

@@ -7,6 +7,8 @@
 #include "evaluation/design_resolution_check.h"
 #include "evaluation/design_spec.h"
 #include "evaluation/input_error.h"
+#include "evaluation/oblique_design.h"
+#include "evaluation/oblique_point_response.h"
 #include "evaluation/validity_envelope.h"
 
 namespace hullopt::eval {
@@ -20,6 +22,15 @@ class MsiEvaluator : public opt::Evaluator, public ResolutionCheckable {
  public:
   MsiEvaluator(DesignBasis basis, std::vector<const hull::DesignVariableField*> fields, MsiObjectiveOptions o)
       : basis_(std::move(basis)), fields_(std::move(fields)), o_(std::move(o)), spectra_(sk::BuildSpectra(o_.seas)) {
+    std::string err;
+    if (!o_.IsValid(&err)) throw std::invalid_argument("MSI objective: " + err);
+    if (o_.Oblique()) {  // normalised weights (equal when none are given)
+      heading_weights_ = o_.heading_weights.empty() ? std::vector<double>(o_.headings_deg.size(), 1.0)
+                                                    : o_.heading_weights;
+      double sum = 0.0;
+      for (double w : heading_weights_) sum += w;
+      for (double& w : heading_weights_) w /= sum;
+    }
     if (!IsOperability()) {
       grid_spectra_ = spectra_;
       return;
@@ -44,11 +55,15 @@ class MsiEvaluator : public opt::Evaluator, public ResolutionCheckable {
     sk::DesignEvaluation ev;
     sk::OperabilityResult op;
     try {  // a non-finite RAO or response is refused where it is computed: this design is not produced
-      rao = DesignRaos(d);
-      if (IsOperability())
-        op = sk::EvaluateOperability(rao, d.Extent(), o_.diagram, o_.criteria, {}, o_.evaluation);
-      else
-        ev = sk::EvaluateDesign(rao, d.Extent(), spectra_, {}, o_.evaluation);
+      if (o_.Oblique()) {
+        r.sea_values = ObliqueSeaValues(d);
+      } else {
+        rao = DesignRaos(d);
+        if (IsOperability())
+          op = sk::EvaluateOperability(rao, d.Extent(), o_.diagram, o_.criteria, {}, o_.evaluation);
+        else
+          ev = sk::EvaluateDesign(rao, d.Extent(), spectra_, {}, o_.evaluation);
+      }
     } catch (const InputError& e) {
       r.produced = false;
       r.error = e.what();
@@ -143,7 +158,23 @@ class MsiEvaluator : public opt::Evaluator, public ResolutionCheckable {
     std::string label = o_.position < 0 ? std::string(accel ? "mean rms accel." : "mean MSI")
                                         : std::string(accel ? "rms accel. " : "MSI ") + kPositions[o_.position];
     if (o_.seas.size() > 1) label += " over " + std::to_string(o_.seas.size()) + " seas";
+    if (o_.Oblique()) label += (o_.seas.size() > 1 ? ", " : " over ") + std::to_string(o_.headings_deg.size()) + " headings";
     return label + (accel ? " [g]" : " [%]");
+  }
+  std::string ObjectiveMethod() const override {
+    if (o_.measure != Measure::kMsi && o_.measure != Measure::kRmsAccel) return "";
+    if (!o_.Oblique())
+      return "head seas (180 deg) by the design's own solver (solver.method, the time-domain strip method by "
+             "default)";
+    std::string m = "weighted over the headings";
+    for (std::size_t h = 0; h < o_.headings_deg.size(); ++h) {
+      char b[64];
+      std::snprintf(b, sizeof b, "%s %g deg (weight %.4g)", h ? "," : "", o_.headings_deg[h], heading_weights_[h]);
+      m += b;
+    }
+    return m + ", every heading (180 included) by the oblique-sea strip theory (STF: no Cs damping in heave and "
+               "pitch, potential roll damping), so that the headings are compared by one method; weights "
+               "normalised to sum 1";
   }
   std::vector<std::string> QuantityNames() const override { return kQuantities; }
   std::vector<std::string> VariableNames() const override {
@@ -156,6 +187,34 @@ class MsiEvaluator : public opt::Evaluator, public ResolutionCheckable {
   bool IsThreadSafe() const override { return false; }
 
  private:
+  // The per-sea values Σ_h w_h v_h by the oblique-sea strip theory (MsiObjectiveOptions::headings_deg): v_h
+  // the MSI [%] or rms vertical acceleration [g] at `position` (the mean of the three standard positions for
+  // -1), all on the hull's centreline at the CG's height, in the long-crested sea travelling at heading h.
+  std::vector<double> ObliqueSeaValues(const DesignCase& d) const {
+    const std::vector<double> omega = SeaFrequencies(d);
+    const sk::ObliqueStripResult result =
+        SolveObliqueDesign(d, d.speed_m_s, omega, o_.headings_deg, DefaultRollRadiusOfGyration(d.hull));
+    std::vector<ShipPoint> points;
+    for (const auto& p : sk::StandardPassengerPositions(d.Extent().cg_to_transom_m))
+      points.push_back({p.name, p.x_from_cg_m, 0.0, 0.0});
+    const double g = d.water.g_m_s2;
+    std::vector<double> values(spectra_.size(), 0.0);
+    for (std::size_t h = 0; h < o_.headings_deg.size(); ++h) {
+      for (std::size_t s = 0; s < spectra_.size(); ++s) {
+        const ObliqueSeaStatistics st = ObliqueStatisticsInSea(result, h, g, spectra_[s], points, o_.evaluation);
+        auto value = [&](const PointSeaStatistics& q) {
+          return o_.measure == Measure::kRmsAccel ? q.rms_vertical_accel_m_s2 / g : q.msi_pct;
+        };
+        double v = 0.0;
+        if (o_.position < 0)
+          v = (value(st.points[0]) + value(st.points[1]) + value(st.points[2])) / 3.0;
+        else
+          v = value(st.points[static_cast<std::size_t>(o_.position)]);
+        values[s] += heading_weights_[h] * v;
+      }
+    }
+    return values;
+  }
   double WeightedMean(const std::vector<double>& v) const {
     double sum = 0, wsum = 0;
     for (std::size_t i = 0; i < v.size(); ++i) {
@@ -178,9 +237,56 @@ class MsiEvaluator : public opt::Evaluator, public ResolutionCheckable {
   MsiObjectiveOptions o_;
   std::vector<sk::WaveSpectrum> spectra_;
   std::vector<sk::WaveSpectrum> grid_spectra_;  // what the frequency grid must resolve: the seas or the cells
+  std::vector<double> heading_weights_;         // the oblique path's weights, normalised
 };
 
 }  // namespace
+
+bool MsiObjectiveOptions::Oblique() const {
+  return !headings_deg.empty() && !(headings_deg.size() == 1 && headings_deg[0] == 180.0);
+}
+
+bool MsiObjectiveOptions::IsValid(std::string* error) const {
+  auto num = [](double v) {
+    char b[32];
+    std::snprintf(b, sizeof b, "%g", v);
+    return std::string(b);
+  };
+  std::string e;
+  if (sea_weights.size() != seas.size())
+    e = "sea_weights: " + std::to_string(sea_weights.size()) + " weights for " + std::to_string(seas.size()) + " seas";
+  double sea_sum = 0.0;
+  for (std::size_t i = 0; i < sea_weights.size() && e.empty(); ++i) {
+    if (!(sea_weights[i] >= 0.0) || !std::isfinite(sea_weights[i]))
+      e = "sea_weights[" + std::to_string(i) + "] = " + num(sea_weights[i]) + ": must be finite and >= 0";
+    sea_sum += sea_weights[i];
+  }
+  if (e.empty() && !seas.empty() && !(sea_sum > 0.0)) e = "sea_weights: at least one weight must be > 0";
+  if (e.empty() && !headings_deg.empty() && measure != Measure::kMsi && measure != Measure::kRmsAccel)
+    e = "headings_deg: applies to the measures msi and rms_accel only";
+  for (std::size_t i = 0; i < headings_deg.size() && e.empty(); ++i) {
+    if (!(headings_deg[i] >= 0.0 && headings_deg[i] < 360.0))
+      e = "headings_deg[" + std::to_string(i) + "] = " + num(headings_deg[i]) + ": must be within [0, 360)";
+    for (std::size_t j = 0; j < i && e.empty(); ++j)
+      if (headings_deg[j] == headings_deg[i])
+        e = "headings_deg[" + std::to_string(i) + "] = " + num(headings_deg[i]) + ": given twice";
+  }
+  if (e.empty() && !heading_weights.empty()) {
+    double sum = 0.0;
+    if (heading_weights.size() != headings_deg.size())
+      e = "heading_weights: " + std::to_string(heading_weights.size()) + " weights for " +
+          std::to_string(headings_deg.size()) + " headings";
+    for (std::size_t i = 0; i < heading_weights.size() && e.empty(); ++i) {
+      if (!(heading_weights[i] >= 0.0) || !std::isfinite(heading_weights[i]))
+        e = "heading_weights[" + std::to_string(i) + "] = " + num(heading_weights[i]) + ": must be finite and >= 0";
+      sum += heading_weights[i];
+    }
+    if (e.empty() && !(sum > 0.0)) e = "heading_weights: at least one weight must be > 0";
+  }
+  if (e.empty()) return true;
+  if (error) *error = e;
+  return false;
+}
 
 std::unique_ptr<opt::Evaluator> MakeMsiEvaluator(DesignBasis basis, const std::vector<std::string>& variables,
                                                  MsiObjectiveOptions options) {

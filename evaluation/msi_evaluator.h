@@ -34,6 +34,23 @@ struct MsiObjectiveOptions {
   int criterion = -1;                              ///< kDowntime: index into criteria; -1: all of them together
   sk::EvaluationOptions evaluation;
   res::ResistanceOptions resistance;
+  /// Wave headings [deg] of measures kMsi and kRmsAccel (180 head seas, 90 beam seas from starboard) and their
+  /// weights (>= 0, not all 0, normalised to sum 1; empty: equal weights). The per-sea value is Σ_h w_h v_h.
+  /// Empty or {180}: head seas by the design's own solver (the time-domain strip method), bitwise the objective
+  /// without headings. Any other list: every heading, 180 included, by the oblique-sea strip theory (STF, no
+  /// Cs damping in heave and pitch; eval::SolveObliqueDesign on eval::SeaFrequencies, the roll radius of
+  /// gyration eval::DefaultRollRadiusOfGyration, potential roll damping: the vertical motions at the
+  /// centreline positions of a port-starboard symmetric hull do not depend on roll), so that the headings are
+  /// compared by one method. At speed a heading with encounter frequency <= 0 on the grid makes the design not
+  /// produced (the config reader admits only headings in [90, 270] at speed).
+  std::vector<double> headings_deg;
+  std::vector<double> heading_weights;
+  /// True when headings_deg asks for the oblique-sea path (anything but empty or {180}).
+  bool Oblique() const;
+  /// The rules of the headings and weights (each heading in [0, 360), none twice; weights one per heading,
+  /// >= 0, not all 0; headings only with kMsi or kRmsAccel) and of sea_weights (one per sea, >= 0, not all 0);
+  /// the error names the field and the value.
+  bool IsValid(std::string* error) const;
 };
 
 /// A campaign objective whose design at x can be re-run at a finer strip resolution (the best design's check).

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 
@@ -65,6 +66,29 @@ sk::RollDampingHull RollDampingHullOf(const hull::HullForm& hull, const hull::Hy
       }
     }
   return h;
+}
+
+void SetDesignRollDamping(const DesignCase& design, const sk::RollDampingOptions& roll,
+                          sk::ObliqueStripOptions* options) {
+  if (roll.model == sk::RollDampingModel::kNone) return;
+  options->roll_damping = roll;
+  options->roll_damping.damping_cs = design.solver.cs();
+  const double z_g_m = design.mass.kg_m - design.running_hull.draught_m;  // as ObliqueMassOf
+  options->roll_damping_hull = RollDampingHullOf(design.hull, design.hydrostatics, -z_g_m, design.water.rho_kg_m3);
+}
+
+std::string RollDampingNote(const sk::ObliqueStripOptions& o) {
+  if (o.roll_damping.model == sk::RollDampingModel::kNone) return "potential only";
+  std::ostringstream os;
+  if (o.roll_damping_hull.Multihull())
+    os << "the demihulls' Cs heave damping at their offsets (B44 += sum y_i^2 0.5 Cs rho U A_wp,i, Cs = "
+       << o.roll_damping.damping_cs << ")";
+  else
+    os << "Ikeda's components (Kawahara, Maekawa & Ikeda 2009: skin friction, eddy making, hull lift; no bilge "
+          "keels)";
+  os << " added to the potential B44, linearised at a roll amplitude of "
+     << o.roll_damping.roll_amplitude_rad * 180.0 / 3.14159265358979323846 << " deg";
+  return os.str();
 }
 
 double RollNaturalFrequency(const sk::ObliqueStripResult& r) {

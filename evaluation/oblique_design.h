@@ -2,6 +2,7 @@
 // The oblique-sea strip theory (seakeeping/motions/oblique_strip_theory.h) for a built design: its running
 // hull's strip stations on the design's strip grid (solver.sections, solver.panels), its mass with the roll and
 // yaw radii of gyration, at any speed and list of headings. No I/O.
+#include <string>
 #include <vector>
 
 #include "evaluation/design_case.h"
@@ -33,6 +34,18 @@ sk::ObliqueStripResult SolveObliqueDesign(const DesignCase& design, double speed
 /// multihull every physical body's |y| and waterplane area (a mirror pair twice).
 sk::RollDampingHull RollDampingHullOf(const hull::HullForm& hull, const hull::Hydrostatics& hs, double og_m,
                                       double rho_kg_m3);
+
+/// The design's viscous roll damping in `options`: `roll` (model, roll amplitude, viscosity) with the hull
+/// particulars of RollDampingHullOf (hull and hydrostatics at rest, OG = the running draught − KG, the design's
+/// water) and, for a multihull, the Cs of the design's solver. model kNone leaves `options` as it is, so that
+/// the solve is bitwise the one without viscous roll damping.
+void SetDesignRollDamping(const DesignCase& design, const sk::RollDampingOptions& roll,
+                          sk::ObliqueStripOptions* options);
+
+/// What the viscous roll damping of `options` is, for notes in outputs: "potential only", or the model
+/// (Ikeda's components for a monohull, the demihulls' Cs heave damping for a multihull) and the roll amplitude
+/// it is linearised at.
+std::string RollDampingNote(const sk::ObliqueStripOptions& options);
 
 /// The roll natural frequency among the solved encounter frequencies: where ω² (I44 + A44(ω)) − C44 is closest
 /// to zero (0 when the hull has no positive roll stiffness).

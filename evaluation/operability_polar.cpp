@@ -1,5 +1,6 @@
 #include "evaluation/operability_polar.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <sstream>
@@ -177,11 +178,27 @@ OperabilityPolar ComputeOperabilityPolar(const DesignCase& design, double kxx_m,
                                          const std::vector<PolarCriterion>& criteria,
                                          const std::vector<sk::PassengerPosition>& user_points,
                                          const PolarOptions& options) {
+  sk::ObliqueStripOptions strip;
+  SetDesignRollDamping(design, options.roll_damping, &strip);
+  std::vector<PolarFlag> flags;
   const ObliqueSolve solve = [&](double U, const std::vector<double>& headings) {
-    return SolveObliqueDesign(design, U, options.omega_rad_s, headings, kxx_m);
+    sk::ObliqueStripResult r = SolveObliqueDesign(design, U, options.omega_rad_s, headings, kxx_m, strip);
+    // The flags at this speed's roll natural frequency (SolveObliqueDesign puts the design's rho and g in).
+    sk::RollDampingOptions roll = strip.roll_damping;
+    roll.rho_kg_m3 = design.water.rho_kg_m3;
+    roll.g_m_s2 = design.water.g_m_s2;
+    for (const std::string& f : sk::RollDampingRangeFlags(strip.roll_damping_hull, RollNaturalFrequency(r), U, roll)) {
+      auto it = std::find_if(flags.begin(), flags.end(), [&](const PolarFlag& p) { return p.text == f; });
+      if (it == flags.end()) it = flags.insert(flags.end(), PolarFlag{f, {}});
+      it->speeds_m_s.push_back(U);
+    }
+    return r;
   };
-  return ComputeOperabilityPolar(solve, design.water.g_m_s2, design.Extent(), diagram, criteria, user_points,
-                                 options);
+  OperabilityPolar out =
+      ComputeOperabilityPolar(solve, design.water.g_m_s2, design.Extent(), diagram, criteria, user_points, options);
+  out.roll_damping = RollDampingNote(strip);
+  out.roll_damping_flags = std::move(flags);
+  return out;
 }
 
 }  // namespace hullopt::eval

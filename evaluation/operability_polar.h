@@ -50,6 +50,9 @@ struct PolarOptions {
   std::vector<double> headings_deg;  ///< within [0, 360), non-empty, no repeats
   std::vector<double> omega_rad_s;   ///< wave frequencies of the solves, > 0, increasing, at least 2
   sk::EvaluationOptions evaluation;  ///< MSI model and quadrature
+  /// Viscous roll damping of the design overload (eval::SetDesignRollDamping: Ikeda's components for a
+  /// monohull, the demihulls' Cs term for a multihull); model kNone (the default): potential roll damping only.
+  sk::RollDampingOptions roll_damping;
   /// The rules above; the error names the field and the value.
   bool IsValid(std::string* error) const;
 };
@@ -63,8 +66,19 @@ struct PolarCell {
   std::vector<double> criterion_share;  ///< [-] per criterion
 };
 
+/// A sentence of sk::RollDampingRangeFlags (the hull or its roll natural frequency outside the range the roll
+/// damping model was fitted in, or a multihull) and the speeds [m/s] at which it was raised.
+struct PolarFlag {
+  std::string text;
+  std::vector<double> speeds_m_s;
+};
+
 struct OperabilityPolar {
   std::vector<PolarCell> cells;  ///< speed-major: cells[s * headings + h]
+  /// The design overload: the roll damping used (eval::RollDampingNote) and its flags at each speed's roll
+  /// natural frequency (eval::RollNaturalFrequency), in the order first raised; empty for kNone.
+  std::string roll_damping;
+  std::vector<PolarFlag> roll_damping_flags;
 };
 
 /// The motions at one speed [m/s] and a list of headings [deg] (on options.omega_rad_s).
@@ -83,7 +97,8 @@ OperabilityPolar ComputeOperabilityPolar(const ObliqueSolve& solve, double g_m_s
                                          const std::vector<sk::PassengerPosition>& user_points,
                                          const PolarOptions& options);
 
-/// The same for a built design (eval::SolveObliqueDesign with roll radius of gyration kxx_m).
+/// The same for a built design (eval::SolveObliqueDesign with roll radius of gyration kxx_m and the viscous
+/// roll damping of options.roll_damping), with the roll damping's note and flags.
 OperabilityPolar ComputeOperabilityPolar(const DesignCase& design, double kxx_m, const sk::ScatterDiagram& diagram,
                                          const std::vector<PolarCriterion>& criteria,
                                          const std::vector<sk::PassengerPosition>& user_points,

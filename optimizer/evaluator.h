@@ -43,6 +43,9 @@ class Evaluator {
   virtual std::vector<std::string> QuantityNames() const = 0;
   /// Axis label of the objective with its unit, for plots (e.g. "mean MSI [%]").
   virtual std::string ObjectiveLabel() const { return "objective"; }
+  /// How the objective is computed when the label alone does not say it (e.g. which motion method over which
+  /// headings), one sentence for summary.json's `objective_method`; empty: nothing to add.
+  virtual std::string ObjectiveMethod() const { return ""; }
   /// Names the free design variables may take (e.g. the generator's variables); empty = any name.
   virtual std::vector<std::string> VariableNames() const { return {}; }
   virtual bool IsThreadSafe() const { return true; }

@@ -41,9 +41,11 @@ FEW_FREQUENCIES = {"range": {"quantity": "lambda_over_L", "from": 1.0, "to": 3.0
 # cost-estimate override...). Each must also be documented; its last component is checked against the source.
 READ_WHEN_PRESENT = {
     "optimize": ["optimize.pareto.quantity", "optimize.pareto.points", "optimize.pareto.from", "optimize.pareto.to",
-                 "optimize.pareto.starts", "solver.time_scheme"],
+                 "optimize.pareto.starts", "solver.time_scheme",
+                 # the objective over headings (tests/cli/campaign_headings.sh runs it)
+                 "optimize.objective.headings_deg", "optimize.objective.heading_weights"],
     # read with `solver.path: time_marching` only
-    "explore": ["solver.time_scheme"],
+    "explore": ["solver.time_scheme", "explore.objective.headings_deg", "explore.objective.heading_weights"],
     "calibrate": ["solver.time_scheme", "mass.kyy_over_L", "mass.kg_over_T"],
     # the campaigns' ratio keys, accepted instead of mass.kyy_m / mass.kg_m (a campaign's best.yaml)
     **{c: ["solver.time_scheme", "mass.kyy_over_L", "mass.kg_over_T"] for c in ("rao", "coefficients", "evaluate")},

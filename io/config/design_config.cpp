@@ -30,6 +30,7 @@ ParsedDesign ParseDesign(YamlMap& root, const std::string& config_file, const st
   s.hull.parametric = hull_opts.source == HullOptions::Source::kParametric;
   s.hull.variables = hull_opts.design;
   s.hull.attitude = hull_opts.attitude;
+  if (o.roll) p.roll_damping = "ikeda";  // the default, also without a solver block
   if (o.frequencies_required || root.Has("solver")) {
     YamlMap sm = root.Map("solver");
     s.has_frequencies = sm.Has("frequencies");
@@ -47,17 +48,19 @@ ParsedDesign ParseDesign(YamlMap& root, const std::string& config_file, const st
           sm.Fail("headings_deg", os.str());
         }
     }
-    if (o.headings) {  // viscous roll damping: read with headings (its default then recorded), refused without
+    // Viscous roll damping: read with headings or with a command that computes roll (its default then
+    // recorded), refused with headings asked for but not given.
+    if (o.headings || o.roll) {
       const char* given = sm.Has("roll_damping") ? "roll_damping"
                           : sm.Has("roll_amplitude_deg") ? "roll_amplitude_deg"
                                                          : nullptr;
-      if (!p.headings_deg.empty() || given) {
+      if (!p.headings_deg.empty() || o.roll || given) {
         p.roll_damping = sm.Choice("roll_damping", {"ikeda", "none"}, "ikeda");
         p.roll_amplitude_deg = sm.Number("roll_amplitude_deg", 5.0);
         if (!(p.roll_amplitude_deg > 0.0 && p.roll_amplitude_deg <= 28.0))
           sm.Fail("roll_amplitude_deg", "must lie in (0, 28] deg (the quadratic damping is linearised at this roll "
                                         "amplitude; 5 deg is the default)");
-        if (p.headings_deg.empty())
+        if (p.headings_deg.empty() && !o.roll)
           sm.Fail(given, "applies with solver.headings_deg only (roll is solved in oblique seas)");
       }
     }

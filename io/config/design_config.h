@@ -39,7 +39,8 @@ struct ParsedDesign {
   /// caller's default from the hull).
   std::vector<double> headings_deg;
   std::optional<double> kxx_m;
-  /// With headings: solver.roll_damping (ikeda | none, default ikeda) and solver.roll_amplitude_deg (default 5).
+  /// With headings or DesignReadOptions::roll: solver.roll_damping (ikeda | none, default ikeda) and
+  /// solver.roll_amplitude_deg (default 5).
   std::string roll_damping = "none";
   double roll_amplitude_deg = 5.0;
 };
@@ -52,7 +53,8 @@ struct DesignReadOptions {
   /// solver.headings_deg (oblique seas, method strip_theory_stf) and mass.kxx_m may be given (rao); with
   /// headings the centre of gravity's height (mass.kg_m or kg_over_T) is required: roll needs it.
   bool headings = false;
-  /// The command computes roll (evaluate's operability.polar): mass.kxx_m may be given and the centre of
+  /// The command computes roll (evaluate's operability.polar): mass.kxx_m, solver.roll_damping and
+  /// solver.roll_amplitude_deg may be given and the centre of
   /// gravity's height (mass.kg_m or kg_over_T) is required; `roll_key` names the block that asks for it (its
   /// first component, a key of the config's root, places the error).
   bool roll = false;

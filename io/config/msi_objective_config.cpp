@@ -1,5 +1,6 @@
 #include "io/config/msi_objective_config.h"
 
+#include <cstdio>
 #include <numeric>
 
 #include "evaluation/msi_evaluator.h"
@@ -11,6 +12,13 @@
 #include "io/config/seas_config.h"
 
 namespace hullopt::io {
+namespace {
+std::string Deg(double v) {
+  char b[32];
+  std::snprintf(b, sizeof b, "%g", v);
+  return b;
+}
+}  // namespace
 
 std::unique_ptr<opt::Evaluator> ReadMsiObjective(YamlMap& root, YamlMap& objective,
                                                  const opt::CampaignDefinition& campaign) {
@@ -64,6 +72,32 @@ std::unique_ptr<opt::Evaluator> ReadMsiObjective(YamlMap& root, YamlMap& objecti
     if (std::accumulate(o.sea_weights.begin(), o.sea_weights.end(), 0.0) <= 0)
       objective.Fail("sea_weights", "at least one weight must be > 0");
   }
+  // Headings of the msi and rms_accel measures, with weights (>= 0, normalised); eval::MsiObjectiveOptions.
+  if (objective.Has("headings_deg")) {
+    if (o.measure != Measure::kMsi && o.measure != Measure::kRmsAccel)
+      objective.Fail("headings_deg", "applies to measure: msi or rms_accel only");
+    o.headings_deg = objective.Numbers("headings_deg");
+    for (std::size_t i = 0; i < o.headings_deg.size(); ++i) {
+      const double h = o.headings_deg[i];
+      if (!(h >= 0.0 && h < 360.0))
+        objective.Fail("headings_deg", "heading " + Deg(h) + " deg: every heading must lie in [0, 360) (180 head "
+                                       "seas, 90 beam seas from starboard; docs/conventions.md)");
+      for (std::size_t j = 0; j < i; ++j)
+        if (o.headings_deg[j] == h) objective.Fail("headings_deg", "heading " + Deg(h) + " deg is given twice");
+    }
+  }
+  if (objective.Has("heading_weights")) {
+    if (o.headings_deg.empty()) objective.Fail("heading_weights", "applies with objective.headings_deg only");
+    o.heading_weights = objective.Numbers("heading_weights");
+    if (o.heading_weights.size() != o.headings_deg.size())
+      objective.Fail("heading_weights", "needs one weight per heading (" + std::to_string(o.headings_deg.size()) +
+                                            " headings)");
+    for (double w : o.heading_weights)
+      if (w < 0) objective.Fail("heading_weights", "weights must be >= 0 (they are normalised to sum 1)");
+    if (std::accumulate(o.heading_weights.begin(), o.heading_weights.end(), 0.0) <= 0)
+      objective.Fail("heading_weights", "at least one weight must be > 0");
+  }
+  const std::string headings_where = objective.Where("headings_deg");
   objective.Finish();
   o.evaluation.msi = ReadMsiOptions(root);
   YamlMap mass = root.MapOrEmpty("mass");
@@ -92,6 +126,14 @@ std::unique_ptr<opt::Evaluator> ReadMsiObjective(YamlMap& root, YamlMap& objecti
       if (read[k]) root.resolved()[k] = YAML::Clone(read[k]);
     }
   }
+  // At speed, following and quartering seas (encounter frequency reaching 0 on the grid) are outside the strip
+  // theory: the oblique path's headings must lie between beam and head seas, [90, 270].
+  if (o.Oblique() && basis.speed.value > 0.0)
+    for (double h : o.headings_deg)
+      if (h < 90.0 || h > 270.0)
+        throw InputError(headings_where + ": heading " + Deg(h) + " deg: at speed the headings must lie in [90, 270] "
+                         "(beam to head seas; following and quartering seas reach encounter frequency 0, outside "
+                         "the strip theory)");
   basis.kyy_over_L = kyy_over_L;
   basis.kg_over_T = kg_over_T;
   std::vector<std::string> names;

@@ -1,5 +1,6 @@
 #include "io/formats/operability_output.h"
 
+#include <algorithm>
 #include <cmath>
 #include <iomanip>
 #include <sstream>
@@ -73,9 +74,15 @@ void WriteOperabilityPolarCsv(const std::string& path, const eval::OperabilityPo
       f << ',';
       if (cell.computed) f << Finite(v, "criterion share");
     }
-    // The note is free text: quoted, with any quote doubled.
+    // The note is free text: quoted, with any quote doubled. A computed cell carries the roll damping's flags
+    // raised at its speed.
+    std::string text = cell.note;
+    if (cell.computed)
+      for (const auto& flag : polar.roll_damping_flags)
+        if (std::find(flag.speeds_m_s.begin(), flag.speeds_m_s.end(), cell.speed_m_s) != flag.speeds_m_s.end())
+          text += (text.empty() ? "warning: " : "; warning: ") + flag.text;
     std::string note;
-    for (char ch : cell.note) note += ch == '"' ? std::string("\"\"") : std::string(1, ch);
+    for (char ch : text) note += ch == '"' ? std::string("\"\"") : std::string(1, ch);
     f << ",\"" << note << "\"\n";
   }
   WriteFileAtomically(path, f.str());

@@ -26,7 +26,8 @@ std::vector<std::string> WriteOperabilityOutputs(const std::string& dir, const s
 
 /// operability_polar.csv: speed_kn,wave_direction_deg (the heading β, as rao.csv),operability ([-] share of the scatter diagram's probability with
 /// every criterion met), then share_<name> per criterion and a note; a cell not computed has empty values and
-/// its reason in the note. Written atomically; throws InputError if it cannot be written.
+/// its reason in the note; a computed cell's note holds the roll damping's flags raised at its speed
+/// ("warning: ...", "; " separated), empty when there are none. Written atomically; throws InputError if it cannot be written.
 void WriteOperabilityPolarCsv(const std::string& path, const eval::OperabilityPolar& polar,
                               const std::vector<eval::PolarCriterion>& criteria);
 

@@ -68,6 +68,26 @@ std::vector<std::pair<double, double>> Bands(const std::vector<double>& v, doubl
   return out;
 }
 
+// The notes and the mirror line, each wrapped at spaces to lines of at most kNoteChars characters (11 px sans
+// serif in the figure's width), continuation lines indented.
+constexpr std::size_t kNoteChars = 140;
+std::vector<std::string> NoteLines(const std::vector<std::string>& notes, bool mirror) {
+  std::vector<std::string> in = notes, out;
+  if (mirror) in.push_back("Headings 0–180° computed; the port side (180–360°) mirrors them (port–starboard symmetric hull).");
+  for (const std::string& n : in) {
+    std::string rest = n, indent;
+    while (rest.size() + indent.size() > kNoteChars) {
+      std::size_t cut = rest.rfind(' ', kNoteChars - indent.size());
+      if (cut == std::string::npos || cut == 0) break;
+      out.push_back(indent + rest.substr(0, cut));
+      rest = rest.substr(cut + 1);
+      indent = "    ";
+    }
+    out.push_back(indent + rest);
+  }
+  return out;
+}
+
 }  // namespace
 
 std::string RenderOperabilityPolarSvg(const eval::OperabilityPolar& polar, const std::string& title,
@@ -90,7 +110,8 @@ std::string RenderOperabilityPolarSvg(const eval::OperabilityPolar& polar, const
   for (std::size_t i = 1; i < headings.size(); ++i) half = std::min(half, 0.5 * (headings[i] - headings[i - 1]));
   bool any_missing = false;
   for (const auto& c : polar.cells) any_missing = any_missing || !c.computed;
-  const double notes_h = 18.0 * (notes.size() + (mirror ? 1 : 0) + 1);
+  const std::vector<std::string> lines = NoteLines(notes, mirror);
+  const double notes_h = 18.0 * (lines.size() + 1);
   const double height = kCy + kRadius + 110.0 + notes_h;
 
   std::ostringstream svg;
@@ -177,8 +198,6 @@ std::string RenderOperabilityPolarSvg(const eval::OperabilityPolar& polar, const
         << "<text x=\"" << bx + bw + 112 << "\" y=\"" << by + 12
         << "\" font-size=\"11\">not computed (ω_e ≤ 0)</text>\n";
   double y = by + 52.0;
-  std::vector<std::string> lines = notes;
-  if (mirror) lines.push_back("Headings 0–180° computed; the port side (180–360°) mirrors them (port–starboard symmetric hull).");
   for (const auto& n : lines) {
     svg << "<text x=\"20\" y=\"" << F(y) << "\" font-size=\"11\" fill=\"#444\">" << HtmlEscape(n) << "</text>\n";
     y += 18.0;

@@ -552,6 +552,30 @@ operability: { scatter_csv: route_model.csv, criteria: [ { msi_max_pct: 20 } ],
                polar: { speeds_kn: [2], headings_deg: [180], criteria: [ { roll_rms_max_deg: 4, position: lcg } ] } }"
 DESC='a roll criterion of the polar given a position'
 run polar_roll_at 1 "roll has no position" - -- evaluate "$T/polar_roll_at.yaml" --out "$T/o101"
+DESC='campaign objective `headings_deg: [180, 360]`'
+w obj_head_360 "$OPT
+optimize: { variables: { L_over_B: [8, 16] }, objective: { measure: msi, headings_deg: [180, 360] } }"
+run obj_head_360 1 "key 'optimize.objective.headings_deg'" - -- optimize "$T/obj_head_360.yaml" --out "$T/o102"
+DESC='campaign objective `heading_weights: [1, -1]`'
+w obj_hw_neg "$OPT
+optimize: { variables: { L_over_B: [8, 16] }, objective: { headings_deg: [180, 150], heading_weights: [1, -1] } }"
+run obj_hw_neg 1 "key 'optimize.objective.heading_weights'" - -- optimize "$T/obj_hw_neg.yaml" --out "$T/o103"
+DESC='campaign objective `heading_weights: [0, 0]`'
+w obj_hw_zero "$OPT
+optimize: { variables: { L_over_B: [8, 16] }, objective: { headings_deg: [180, 150], heading_weights: [0, 0] } }"
+run obj_hw_zero 1 "at least one weight must be > 0" - -- explore "$T/obj_hw_zero.yaml" --out "$T/o104"
+DESC='campaign objective with 2 headings and 3 `heading_weights`'
+w obj_hw_count "$OPT
+optimize: { variables: { L_over_B: [8, 16] }, objective: { headings_deg: [180, 150], heading_weights: [1, 1, 1] } }"
+run obj_hw_count 1 "needs one weight per heading" - -- optimize "$T/obj_hw_count.yaml" --out "$T/o105"
+DESC='campaign objective heading 45 deg (quartering seas) at 40 kn'
+w obj_head_45 "$OPT
+optimize: { variables: { L_over_B: [8, 16] }, objective: { headings_deg: [180, 45] } }"
+run obj_head_45 1 "at speed the headings must lie in [90, 270]" - -- optimize "$T/obj_head_45.yaml" --out "$T/o106"
+DESC='campaign objective `headings_deg` with `measure: P_E_kW`'
+w obj_head_pe "$OPT
+optimize: { variables: { L_over_B: [8, 16] }, objective: { measure: P_E_kW, headings_deg: [150] } }"
+run obj_head_pe 1 "applies to measure: msi or rms_accel only" - -- optimize "$T/obj_head_pe.yaml" --out "$T/o107"
 
 # Not a row: without a mass block, hydrostatics.json's KG is the documented default, the draught.
 w nomass "hull: { parametric: { $P } }"

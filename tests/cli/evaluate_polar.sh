@@ -2,7 +2,9 @@
 # `hullopt evaluate` with `operability.polar` end to end on a coarse Delft 372 model (10 sections x 6 panels,
 # 8 frequencies): operability_polar.csv has a row per (speed, heading) with the documented columns, shares in
 # [0, 1], following seas at speed marked (empty values, a note) and computed at zero speed; the SVG is written
-# with head seas labelled and the hatching of the cells not computed; and a polar on RAO files is refused.
+# with head seas labelled and the hatching of the cells not computed; the viscous roll damping (default ikeda:
+# for the catamaran the demihulls' Cs term, flagged) is stated and its flags reach the CSV's notes, stderr, the
+# SVG and summary.json, and with solver.roll_damping: none nothing is flagged; a polar on RAO files is refused.
 set -euo pipefail
 HULLOPT=${1:?usage: evaluate_polar.sh /path/to/hullopt}
 HULLOPT=$(cd "$(dirname "$HULLOPT")" && pwd)/$(basename "$HULLOPT")
@@ -48,14 +50,35 @@ for r in rows:
     kn, beta = float(r["speed_kn"]), float(r["wave_direction_deg"])
     if kn > 0 and beta == 0:  # 4 kn = 2.06 m/s: ω_e = 0 at g/U = 4.8 rad/s, inside the grid (to 9 rad/s)
         assert r["operability"] == "" and "encounter frequency <= 0" in r["note"], r
-    else:
-        assert r["note"] == "", r
+    else:  # the catamaran's roll damping flagged in every computed cell (Ikeda does not cover a demihull pair)
+        assert r["note"].startswith("warning: roll damping: ") and "demihull pair" in r["note"], r
         op = float(r["operability"])
         assert 0.0 <= op <= 1.0, r
         for k in head[3:-1]:
             assert op <= float(r[k]) + 1e-12, (k, r)  # all criteria together hold no more often than each
 PY
 grep -q "operability polar" "$TMP/stdout.txt" || fail "no polar lines on stdout"
+grep -q "^hullopt: warning: .*operability polar: roll damping: Ikeda's monohull formulae do not cover a demihull pair" \
+  "$TMP/stderr.txt" || fail "the roll damping's flag is not on stderr"
+grep -q "operability polar: roll damping: the demihulls' Cs term is zero here (zero speed).*(at 0 kn)" \
+  "$TMP/stderr.txt" || fail "the zero-speed flag does not name its speed"
+grep -q "Roll damping: the demihulls&#39; Cs heave damping" "$TMP/out/operability_polar.svg" \
+  || fail "the SVG does not state the roll damping"
+grep -q "demihull pair" "$TMP/out/summary.json" || fail "summary.json does not carry the roll damping's flag"
+
+# solver.roll_damping: none: potential roll damping only, nothing flagged.
+sed -e 's/adaptive_grid: off,/adaptive_grid: off, roll_damping: none,/' -e 's/speeds_kn: \[0, 4\]/speeds_kn: [4]/' \
+  "$TMP/polar.yaml" > "$TMP/none.yaml"
+(cd "$TMP" && "$HULLOPT" evaluate none.yaml --out out_none > /dev/null 2> err_none.txt) \
+  || fail "evaluate with roll_damping: none failed: $(cat "$TMP/err_none.txt")"
+grep -q "Roll damping: potential only" "$TMP/out_none/operability_polar.svg" || fail "none: the SVG"
+! grep -q "operability polar: roll damping" "$TMP/err_none.txt" || fail "none: a roll damping flag"
+/usr/bin/python3 - "$TMP/out_none/operability_polar.csv" <<'PY' || fail "none: operability_polar.csv"
+import csv, sys
+rows = list(csv.DictReader(open(sys.argv[1])))
+assert len(rows) == 4, len(rows)
+assert all(r["note"] == "" or "encounter frequency <= 0" in r["note"] for r in rows), rows
+PY
 
 # RAO files have no oblique-sea motions: the polar is refused there.
 cp "$ROOT/examples/data/synthetic_catamaran_rao.csv" "$TMP/rao.csv"

@@ -7,7 +7,11 @@
 //    solved and is marked; at zero speed every heading is computed;
 //  - a roll limit far below any roll holds in head seas (no roll on a symmetric hull) and fails in beam seas;
 //  - limits no sea reaches give operability 1;
-//  - bad options are refused with the field named.
+//  - bad options are refused with the field named;
+//  - a built monohull design (the MONa form of Table 1, coarse strips) with the viscous roll damping: in beam
+//    seas a roll limit between the rms roll of the design solved without and with Ikeda's damping (each from
+//    eval::SolveObliqueDesign and the point statistics) fails in the polar without it and holds with it, and
+//    the hull, outside the fitted range (Cb 0.39 < 0.5), is flagged at the polar's speed.
 #include <algorithm>
 #include <catch2/catch.hpp>
 #include <cmath>
@@ -15,6 +19,9 @@
 #include <stdexcept>
 #include <vector>
 
+#include "evaluation/design_spec.h"
+#include "evaluation/oblique_design.h"
+#include "evaluation/oblique_point_response.h"
 #include "evaluation/operability_polar.h"
 #include "seakeeping/motions/oblique_strip_theory.h"
 #include "seas/operability.h"
@@ -163,4 +170,79 @@ TEST_CASE("operability polar refuses bad options", "[verification][oblique]") {
   bad[0] = {"x", eval::PolarQuantity::kMsi, "bridge", 0.0, 0.0, 10.0, ""};
   CHECK_THROWS_AS(eval::ComputeOperabilityPolar(Solver(), kG, kHull, Diagram(), bad, {}, Options({kU}, {180.0})),
                   std::invalid_argument);
+}
+
+namespace {
+// MONa (Davis & Holloway 2003, Table 1, hull 14; configs/polar-mona-40kn.yaml) on 12 sections x 6 panels.
+eval::DesignCase MonaDesign() {
+  eval::DesignSpec spec;
+  spec.source = "typed";
+  auto& v = spec.hull.variables;
+  v.type = hull::HullType::kMonohull;
+  v.section_style = hull::SectionStyle::kRoundBilge;
+  v.displacement_t = 1000;
+  v.L_over_B = 11.9;
+  v.B_over_T = 4.51;
+  v.Cb = 0.39;
+  v.Cp = 0.60;
+  v.Cwp = 0.66;
+  v.LCB_pct_L = -9.6;
+  v.LCF_pct_L = -15.5;
+  v.transom_immersion = 0.3;
+  v.transom_beam_ratio = 1.0;
+  v.keel_rise = 0.3;
+  spec.speed.unit = eval::SpeedOptions::Unit::kKnots;
+  spec.speed.value = 20;
+  spec.solver.rao.sections = 12;
+  spec.solver.rao.panels = 6;
+  spec.solver.grid.enabled = false;
+  spec.mass.kg_m = 4.0;
+  return eval::BuildDesign(spec);
+}
+}  // namespace
+
+TEST_CASE("operability polar of a design with the viscous roll damping", "[verification][oblique]") {
+  const eval::DesignCase d = MonaDesign();
+  const double U = d.speed_m_s, kxx = eval::DefaultRollRadiusOfGyration(d.hull);
+  std::vector<double> grid;
+  for (int i = 0; i < 24; ++i) grid.push_back(0.3 + 2.0 * i / 23);
+  sk::RollDampingOptions ikeda;
+  ikeda.model = sk::RollDampingModel::kIkeda;
+  // The rms roll in one beam sea, potential damping only and with Ikeda's components.
+  const sk::SeaState sea = sk::SeaState::BretschneiderTz(2.0, 7.5);
+  const sk::WaveSpectrum spectrum(sea);
+  const sk::ObliqueStripResult r0 = eval::SolveObliqueDesign(d, U, grid, {90.0}, kxx);
+  sk::ObliqueStripOptions with;
+  eval::SetDesignRollDamping(d, ikeda, &with);
+  const sk::ObliqueStripResult r1 = eval::SolveObliqueDesign(d, U, grid, {90.0}, kxx, with);
+  const double roll0 = eval::ObliqueStatisticsInSea(r0, 0, d.water.g_m_s2, spectrum, {}).rms_roll_rad * 180 / M_PI;
+  const double roll1 = eval::ObliqueStatisticsInSea(r1, 0, d.water.g_m_s2, spectrum, {}).rms_roll_rad * 180 / M_PI;
+  std::printf("MONa 20 kn, 90 deg, Hs 2 m Tz 7.5 s: rms roll %.3f deg potential, %.3f deg with Ikeda\n", roll0,
+              roll1);
+  REQUIRE(roll1 < roll0);  // viscous damping only adds to B44
+  sk::ScatterDiagram diagram;
+  diagram.cells.push_back({sea.Hs_m, sea.Tz_s, 1.0});
+  diagram.spectrum = sk::SpectrumType::kBretschneider;
+  diagram.gamma = 1.0;
+  std::vector<eval::PolarCriterion> criteria(1);
+  criteria[0] = {"roll", eval::PolarQuantity::kRmsRoll, "", 0.0, 0.0, std::sqrt(roll0 * roll1), ""};
+  eval::PolarOptions o;
+  o.speeds_m_s = {U};
+  o.headings_deg = {90.0};
+  o.omega_rad_s = grid;
+  const eval::OperabilityPolar none = eval::ComputeOperabilityPolar(d, kxx, diagram, criteria, {}, o);
+  o.roll_damping = ikeda;
+  const eval::OperabilityPolar viscous = eval::ComputeOperabilityPolar(d, kxx, diagram, criteria, {}, o);
+  CHECK(none.cells[0].operability == 0.0);
+  CHECK(viscous.cells[0].operability == 1.0);
+  CHECK(none.roll_damping == "potential only");
+  CHECK(none.roll_damping_flags.empty());
+  CHECK(viscous.roll_damping.find("Ikeda's components") != std::string::npos);
+  bool cb = false;
+  for (const auto& f : viscous.roll_damping_flags) {
+    std::printf("flag: %s\n", f.text.c_str());
+    CHECK(f.speeds_m_s == std::vector<double>{U});
+    cb = cb || f.text.find("Cb") != std::string::npos;
+  }
+  CHECK(cb);
 }
