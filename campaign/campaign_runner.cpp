@@ -7,6 +7,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <exception>
+#include <mutex>
 
 #include "hullopt/version.h"
 #include "io/config/campaign_outputs.h"
@@ -61,7 +63,65 @@ io::InputError CampaignRunner::ResumeError(const opt::ReplayMismatch& e) const {
                         words_.sequence + ": " + e.what() + "; delete the file to start over");
 }
 
+std::vector<nlohmann::json> CampaignRunner::SplitOverThreads(int units, const UnitWork& work) {
+  // The units run on the threads; the head unit (the lowest one not finished) hands its records straight to
+  // Add, later units keep theirs until every unit before them is finished, so Add sees the sequence order of
+  // one thread. Add (the log, progress) runs under the lock, one record at a time.
+  std::vector<nlohmann::json> reports(units);
+  std::vector<std::vector<opt::EvaluationRecord>> waiting(units);
+  std::vector<char> finished(units, 0);
+  int head = 0;
+  std::mutex mutex;
+  std::exception_ptr error;  // the first failure (or EvaluationLimitReached); the other units stop at their next record
+  struct Stopped {};         // thrown into a unit's work once another unit has failed
+  const int nthreads = threads_;
+  (void)nthreads;  // read only by the OpenMP pragma; a build without OpenMP runs the units in order
+#pragma omp parallel for schedule(dynamic, 1) num_threads(nthreads)
+  for (int unit = 0; unit < units; ++unit) {
+    {
+      std::lock_guard<std::mutex> lock(mutex);
+      if (error) continue;
+    }
+    try {
+      opt::RecordSink sink = [&, unit](const opt::EvaluationRecord& rec) {
+        std::lock_guard<std::mutex> lock(mutex);
+        if (error) throw Stopped{};
+        if (unit != head) {
+          waiting[unit].push_back(rec);
+          return;
+        }
+        try {
+          Add(rec);
+        } catch (...) {
+          error = std::current_exception();
+          throw Stopped{};
+        }
+      };
+      nlohmann::json j = work(unit, sink);
+      std::lock_guard<std::mutex> lock(mutex);
+      reports[unit] = std::move(j);
+      finished[unit] = 1;
+      while (!error && head < units && finished[head]) {
+        if (++head == units) break;
+        try {
+          for (const opt::EvaluationRecord& rec : waiting[head]) Add(rec);
+        } catch (...) {
+          error = std::current_exception();
+        }
+        waiting[head].clear();
+      }
+    } catch (const Stopped&) {
+    } catch (...) {
+      std::lock_guard<std::mutex> lock(mutex);
+      if (!error) error = std::current_exception();
+    }
+  }
+  if (error) std::rethrow_exception(error);
+  return reports;
+}
+
 std::vector<nlohmann::json> CampaignRunner::Split(int units, const UnitWork& work) {
+  if (size_ == 1 && threads_ > 1 && units > 1 && evaluator().IsThreadSafe()) return SplitOverThreads(units, work);
   std::vector<nlohmann::json> reports;
   for (int round = 0; round * size_ < units; ++round) {
     const int unit = round * size_ + rank_;

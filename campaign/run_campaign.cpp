@@ -59,6 +59,8 @@ CampaignResult RunCampaign(const CampaignSpec& spec, const CampaignRunOptions& o
   // A Pareto sweep: ordinary optimize campaigns, one per point, inside the output folder.
   CampaignResult last;
   std::string texts;
+  // The points follow each other (each starts from the front so far); a point's multistart runs share the
+  // threads (CampaignRunner::Split).
   auto run_optimize = [&](const std::string& config, const std::string& out) {
     CampaignRunOptions one = options;
     one.out = out;

@@ -183,8 +183,10 @@ class MsiEvaluator : public opt::Evaluator, public ResolutionCheckable {
       if (f.campaign_variable) names.push_back(f.name);
     return names;
   }
-  // The strip kernel runs OpenMP-parallel inside; evaluations run one at a time.
-  bool IsThreadSafe() const override { return false; }
+  // Evaluate changes nothing of the evaluator and the chain below it keeps its scratch per thread, so designs
+  // may be evaluated concurrently (explore's samples, optimize's multistart runs); the strip kernel's own
+  // parallel loops then run on the design's thread.
+  bool IsThreadSafe() const override { return true; }
 
  private:
   // The per-sea values Σ_h w_h v_h by the oblique-sea strip theory (MsiObjectiveOptions::headings_deg): v_h
