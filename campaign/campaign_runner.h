@@ -126,6 +126,12 @@ class CampaignRunner {
   int threads_ = 1, rank_ = 0, size_ = 1;
   std::unique_ptr<opt::ConstraintSet> constraints_;
   std::unique_ptr<CampaignJournal> journal_;
+  // --profile: the stage times of the evaluations computed here, their wall times and the log's writes.
+  opt::EvalCost cost_;
+  long costed_ = 0;
+  double costed_wall_s_ = 0.0, log_s_ = 0.0;
+  nlohmann::json ProfileJson() const;
+  std::string ProfileText() const;
 };
 
 /// Runs one campaign of the given kind end to end (collective). Throws io::InputError for bad input.

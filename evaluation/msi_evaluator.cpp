@@ -10,6 +10,7 @@
 #include "evaluation/oblique_design.h"
 #include "evaluation/oblique_point_response.h"
 #include "evaluation/validity_envelope.h"
+#include "optimizer/evaluation_cost.h"
 
 namespace hullopt::eval {
 namespace {
@@ -59,6 +60,7 @@ class MsiEvaluator : public opt::Evaluator, public ResolutionCheckable {
         r.sea_values = ObliqueSeaValues(d);
       } else {
         rao = DesignRaos(d);
+        const opt::CostTimer timer(opt::CostStage::kSeas);
         if (IsOperability())
           op = sk::EvaluateOperability(rao, d.Extent(), o_.diagram, o_.criteria, {}, o_.evaluation);
         else
@@ -92,6 +94,7 @@ class MsiEvaluator : public opt::Evaluator, public ResolutionCheckable {
     // Calm-water resistance at the design speed (about 2 ms CPU for the default catamaran, bench_resistance).
     res::ResistanceAtSpeed rs;
     try {
+      const opt::CostTimer timer(opt::CostStage::kResistance);
       rs = res::CalmWaterResistance(d.hull, o_.resistance).At(d.speed_m_s, d.water.rho_kg_m3, d.water.g_m_s2);
     } catch (const std::invalid_argument& e) {
       r.produced = false;
@@ -194,8 +197,12 @@ class MsiEvaluator : public opt::Evaluator, public ResolutionCheckable {
   // -1), all on the hull's centreline at the CG's height, in the long-crested sea travelling at heading h.
   std::vector<double> ObliqueSeaValues(const DesignCase& d) const {
     const std::vector<double> omega = SeaFrequencies(d);
-    const sk::ObliqueStripResult result =
-        SolveObliqueDesign(d, d.speed_m_s, omega, o_.headings_deg, DefaultRollRadiusOfGyration(d.hull));
+    sk::ObliqueStripResult result;
+    {
+      const opt::CostTimer timer(opt::CostStage::kObliqueSolve);
+      result = SolveObliqueDesign(d, d.speed_m_s, omega, o_.headings_deg, DefaultRollRadiusOfGyration(d.hull));
+    }
+    const opt::CostTimer timer(opt::CostStage::kSeas);
     std::vector<ShipPoint> points;
     for (const auto& p : sk::StandardPassengerPositions(d.Extent().cg_to_transom_m))
       points.push_back({p.name, p.x_from_cg_m, 0.0, 0.0});
