@@ -273,13 +273,7 @@ bool MsiObjectiveOptions::IsValid(std::string* error) const {
   if (e.empty() && !seas.empty() && !(sea_sum > 0.0)) e = "sea_weights: at least one weight must be > 0";
   if (e.empty() && !headings_deg.empty() && measure != Measure::kMsi && measure != Measure::kRmsAccel)
     e = "headings_deg: applies to the measures msi and rms_accel only";
-  for (std::size_t i = 0; i < headings_deg.size() && e.empty(); ++i) {
-    if (!(headings_deg[i] >= 0.0 && headings_deg[i] < 360.0))
-      e = "headings_deg[" + std::to_string(i) + "] = " + num(headings_deg[i]) + ": must be within [0, 360)";
-    for (std::size_t j = 0; j < i && e.empty(); ++j)
-      if (headings_deg[j] == headings_deg[i])
-        e = "headings_deg[" + std::to_string(i) + "] = " + num(headings_deg[i]) + ": given twice";
-  }
+  if (e.empty()) e = CheckHeadingList(headings_deg, "headings_deg");
   if (e.empty() && !heading_weights.empty()) {
     double sum = 0.0;
     if (heading_weights.size() != headings_deg.size())
