@@ -31,7 +31,7 @@ done
 grep -q '^profile: 2 evaluations computed' "$work/p.err" || fail "profile header: $(head -1 "$work/p.err")"
 grep -q 'profile' "$work/n.err" && fail "profile printed without --profile"
 grep -q '"profile"' "$work/n/summary.json" && fail "summary.json has a profile without --profile"
-strip() { awk -F, 'NR==1{for(i=1;i<=NF;i++) if($i=="wall_time_s") w=i} {s=""; for(i=1;i<=NF;i++) if(i!=w) s=s (s==""?"":",") $i; print s}' "$1"; }
+source "$ROOT/tests/support/cli_campaign.sh"  # strip
 cmp -s <(strip "$work/p/history.csv") <(strip "$work/n/history.csv") || fail "history.csv differs with --profile"
 python3 - "$work/p/summary.json" "$work/p/history.csv" <<'PY' || fail "summary.json profile"
 import csv, json, sys
