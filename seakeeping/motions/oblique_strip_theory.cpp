@@ -186,6 +186,24 @@ std::vector<SectionHydrodynamics> SolveSections(const std::vector<ObliqueStripSt
   return hydro;
 }
 
+// body(i) for i = 0 .. n-1 in one parallel loop over the frequencies (or (heading, frequency) pairs); each i
+// writes its own results only, so they are the same bits for any thread count. An exception is rethrown
+// after the loop, the one of the lowest i (the one a serial loop would meet first).
+template <class Body>
+void ForEachFrequency(int n, const Body& body) {
+  std::vector<std::exception_ptr> failures(static_cast<std::size_t>(n));
+#pragma omp parallel for schedule(dynamic, 1)
+  for (int i = 0; i < n; ++i) {
+    try {
+      body(i);
+    } catch (...) {
+      failures[i] = std::current_exception();
+    }
+  }
+  for (const std::exception_ptr& f : failures)
+    if (f) std::rethrow_exception(f);
+}
+
 // The sectional coefficients about the CG's height and their strip sums (no speed terms) at one frequency,
 // from hydro[first .. first + wet.size()).
 ObliqueFrequencyResult FrequencyCoefficients(const std::vector<ObliqueStripStation>& stations,
@@ -313,9 +331,10 @@ void SolveAtSpeed(const std::vector<ObliqueStripStation>& stations, const std::v
       if (it == distinct.end()) distinct.push_back(we);
     }
   const std::vector<SectionHydrodynamics> hydro = SolveSections(stations, wet, distinct, so);
-  for (std::size_t e = 0; e < distinct.size(); ++e)
-    out.frequencies.push_back(
-        FrequencyCoefficients(stations, wet, hydro, e * ns, distinct[e], g, mass.x_g_m, zg));
+  out.frequencies.resize(distinct.size());
+  ForEachFrequency(static_cast<int>(distinct.size()), [&](int e) {
+    out.frequencies[e] = FrequencyCoefficients(stations, wet, hydro, e * ns, distinct[e], g, mass.x_g_m, zg);
+  });
   // Stations bow to stern (the order the strip passes them), and each one's wet index (−1: dry).
   std::vector<int> order(stations.size()), wet_index(stations.size(), -1);
   for (std::size_t n = 0; n < order.size(); ++n) order[n] = static_cast<int>(n);
@@ -324,8 +343,9 @@ void SolveAtSpeed(const std::vector<ObliqueStripStation>& stations, const std::v
   for (std::size_t s = 0; s < ns; ++s) wet_index[wet[s]] = static_cast<int>(s);
 
   out.waves.resize(nh * nf);
-  for (std::size_t hd = 0; hd < nh; ++hd)
-    for (std::size_t f = 0; f < nf; ++f) {
+  ForEachFrequency(static_cast<int>(nh * nf), [&](int job) {
+    const std::size_t hd = job / nf, f = job % nf;
+    {  // one (heading, frequency) pair
       const std::size_t e = entry[hd * nf + f];
       const ObliqueFrequencyResult& fr = out.frequencies[e];
       const double w = omegas[f], k = w * w / g, we = distinct[e], beta = headings_deg[hd] * M_PI / 180.0;
@@ -379,6 +399,7 @@ void SolveAtSpeed(const std::vector<ObliqueStripStation>& stations, const std::v
       SolveWave(MotionMatrix(we, out.mass, wr.added_mass, wr.damping, out.restoring, wr.viscous_roll_damping),
                 k, wr);
     }
+  });
 }
 
 }  // namespace
@@ -428,9 +449,10 @@ ObliqueStripResult SolveObliqueStripTheory(const std::vector<ObliqueStripStation
   const std::vector<SectionHydrodynamics> hydro = SolveSections(stations, wet, omegas, so);
   const std::size_t nh = headings_deg.size();
   out.waves.resize(nh * nf);
-  for (int f = 0; f < nf; ++f) {
-    const ObliqueFrequencyResult& fr = out.frequencies.emplace_back(
-        FrequencyCoefficients(stations, wet, hydro, f * ns, omegas[f], g, mass.x_g_m, zg));
+  out.frequencies.resize(nf);
+  ForEachFrequency(nf, [&](int f) {
+    const ObliqueFrequencyResult& fr = out.frequencies[f] =
+        FrequencyCoefficients(stations, wet, hydro, f * ns, omegas[f], g, mass.x_g_m, zg);
     const double w = omegas[f], k = fr.k_per_m;
     const double viscous_b44 = ViscousRollB44(options, w);
     const auto lu = MotionMatrix(w, out.mass, fr.added_mass, fr.damping, out.restoring, viscous_b44);
@@ -459,7 +481,7 @@ ObliqueStripResult SolveObliqueStripTheory(const std::vector<ObliqueStripStation
       }
       SolveWave(lu, k, wr);
     }
-  }
+  });
   return out;
 }
 
