@@ -105,6 +105,8 @@ bool ObliqueStripOptions::IsValid(std::string* error) const {
     os << "g_m_s2 = " << g_m_s2 << " must be a finite number > 0";
   else if (!Finite(speed_m_s))
     os << "speed_m_s = " << speed_m_s << " must be finite";
+  else if (!(damping_cs >= 0.0) || !Finite(damping_cs))
+    os << "damping_cs = " << damping_cs << " must be a finite number >= 0";
   else if (!section.IsValid(&section_error))
     os << "section: " << section_error;
   else if (roll_damping.model != RollDampingModel::kNone && !roll_damping.IsValid(&section_error))
@@ -260,11 +262,62 @@ void AddLongitudinalFroudeKrylov(const std::vector<Panel>& panels, double k, dou
   wr.froude_krylov[5] -= phase * ikc * m[1];
 }
 
+// Waterline integrals of one section (closed by its waterline): ∫_wl f(y) dy = −∮ f(y) n_z ds (the lid's normal
+// is +z and ∮ f(y) n_z ds over the closed section vanishes), for f = 1 (the breadth, exact) and e^{−ik_y y}
+// (Gauss–Legendre along each panel, as SectionPressureMoments).
+struct WaterlineIntegrals {
+  double breadth = 0.0;  // [m]
+  C wave;                // [m] ∫_wl e^{−ik_y y} dy
+};
+WaterlineIntegrals SectionWaterline(const std::vector<Panel>& panels, double ky) {
+  const QuadratureRule& rule = GaussLegendre01(8);
+  WaterlineIntegrals out;
+  for (const Panel& p : panels) {
+    const double nzl = p.Normal()[1] * p.Length();
+    out.breadth -= nzl;
+    const int parts = 1 + static_cast<int>(std::fabs(ky * (p.y2 - p.y1)) / 0.5);
+    for (int part = 0; part < parts; ++part)
+      for (std::size_t q = 0; q < rule.nodes.size(); ++q) {
+        const double t = (part + rule.nodes[q]) / parts;
+        out.wave += std::polar(-nzl * rule.weights[q] / parts, -ky * (p.y1 + t * (p.y2 - p.y1)));
+      }
+  }
+  return out;
+}
+
+// The paper's sectional damping D = ½ Cs ρ U B (v − ζ_t) against the section's vertical velocity v = ẋ3 − ξ ẋ5
+// + U x5 relative to the incident surface (head_sea_ship_model.h), ζ_t = iω ζ its earth-frame rate averaged over
+// the section's waterline (the oblique wave varies across it): a heave–pitch damping matrix, a U x5 restoring
+// part and a wave excitation. At β = 180° they are the head-sea path's terms. Roll keeps the roll damping model
+// (roll_damping.h), whose multihull form is this term's roll analogue (the demihulls' heave, v = y ẋ4), so it is
+// not counted twice. Adds to wr.cs_damping, cs_restoring and cs_excitation.
+void AddCsDamping(const std::vector<ObliqueStripStation>& stations, double x_g_m, double k, double w,
+                  double beta, const ObliqueStripOptions& options, ObliqueWaveResult& wr) {
+  const double damp = 0.5 * options.damping_cs * options.rho_kg_m3 * options.speed_m_s;
+  const double U = options.speed_m_s, ky = k * std::sin(beta);
+  for (const ObliqueStripStation& st : stations) {
+    if (st.panels.empty()) continue;
+    const WaterlineIntegrals wl = SectionWaterline(st.panels, ky);
+    const double xi = st.x_m - x_g_m, d = damp * st.weight_m * wl.breadth;
+    // Heave (index 2) and pitch (4): the section's vertical velocity per unit ẋ3 is 1, per unit ẋ5 −ξ.
+    wr.cs_damping(2, 2) += d;
+    wr.cs_damping(2, 4) -= d * xi;
+    wr.cs_damping(4, 2) -= d * xi;
+    wr.cs_damping(4, 4) += d * xi * xi;
+    wr.cs_restoring(2, 4) += d * U;
+    wr.cs_restoring(4, 4) -= d * U * xi;
+    const C surface = C(0.0, w) * damp * st.weight_m * wl.wave * std::polar(1.0, -k * xi * std::cos(beta));
+    wr.cs_excitation[2] += surface;
+    wr.cs_excitation[4] -= surface * xi;
+  }
+}
+
 // Excitation = Froude–Krylov + diffraction, then the 5-dof solve; rotations per wave slope kA.
 void SolveWave(const Eigen::PartialPivLU<Eigen::MatrixXcd>& lu, double k, ObliqueWaveResult& wr) {
   Eigen::VectorXcd rhs(5);
   for (int d = 1; d < 6; ++d) {
     wr.excitation[d] = wr.froude_krylov[d] + wr.diffraction[d];
+    if (wr.cs_excitation[d] != C(0.0)) wr.excitation[d] += wr.cs_excitation[d];
     rhs[d - 1] = wr.excitation[d];
   }
   const Eigen::VectorXcd x = lu.solve(rhs);
@@ -396,8 +449,15 @@ void SolveAtSpeed(const std::vector<ObliqueStripStation>& stations, const std::v
       wr.added_mass = force.real() / (we * we);
       wr.damping = -force.imag() / we;
       wr.viscous_roll_damping = ViscousRollB44(options, we);
-      SolveWave(MotionMatrix(we, out.mass, wr.added_mass, wr.damping, out.restoring, wr.viscous_roll_damping),
-                k, wr);
+      if (options.damping_cs > 0.0) {
+        AddCsDamping(stations, mass.x_g_m, k, w, beta, options, wr);
+        SolveWave(MotionMatrix(we, out.mass, wr.added_mass, wr.damping + wr.cs_damping,
+                               out.restoring + wr.cs_restoring, wr.viscous_roll_damping),
+                  k, wr);
+      } else {
+        SolveWave(MotionMatrix(we, out.mass, wr.added_mass, wr.damping, out.restoring, wr.viscous_roll_damping),
+                  k, wr);
+      }
     }
   });
 }
