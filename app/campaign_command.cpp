@@ -26,6 +26,9 @@ CLI::App* AddCampaignCommand(CLI::App& app, const CommandText& text,
   if (more_options) more_options(cmd);
   cmd->add_flag("--quiet", o->quiet, "no progress output");
   cmd->add_flag("--no-plots", o->no_plots, "write the numbers only: no SVG figures and no report.html");
+  cmd->add_flag("--profile", o->profile,
+                "where the evaluations' time goes: mean wall time per evaluation of each stage (hull, attitude, "
+                "panelling, kernel, solve, seas, resistance, log) on stderr and in summary.json");
   return cmd;
 }
 
@@ -37,6 +40,7 @@ void RunCampaignCommand(io::CampaignCommand command, const CampaignCliOptions& o
   options.quiet = o.quiet;
   options.plots = !o.no_plots;
   options.chunk = o.chunk;
+  options.profile = o.profile;
   options.comm = &ProcessComm();
   std::unique_ptr<Progress> bar;
   options.progress = [&bar](const campaign::CampaignProgress& p) {
@@ -59,6 +63,7 @@ void RunCampaignCommand(io::CampaignCommand command, const CampaignCliOptions& o
   const campaign::CampaignResult result =
       campaign::RunCampaign(campaign::CampaignSpec::FromFile(command, o.config), options);
   if (MpiRank() != 0) return;
+  if (o.profile) std::fputs(result.profile_text.c_str(), stderr);
   if (!o.quiet) std::fputs(result.text.c_str(), stdout);
   if (!result.sweep.empty()) std::fputs(result.sweep.c_str(), stdout);
 }

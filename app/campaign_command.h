@@ -18,16 +18,19 @@ struct CampaignCliOptions {
   bool quiet = false;  ///< no progress or result lines
   bool no_plots = false;  ///< no SVG figures and no report.html (the numbers only)
   int chunk = 0;       ///< explore: samples per MPI rank and round (0 = 2 x threads)
+  bool profile = false;   ///< the cost split of the evaluations on stderr and in summary.json
 };
 
-/// Registers a campaign command, `hullopt NAME CONFIG --out DIR --threads N [more options] --quiet`; run(options)
+/// Registers a campaign command, `hullopt NAME CONFIG --out DIR --threads N [more options] --quiet --no-plots
+/// --profile`; run(options)
 /// runs under the output folder's lock. more_options adds the command's own options (after --threads).
 CLI::App* AddCampaignCommand(CLI::App& app, const CommandText& text,
                              std::function<void(const CampaignCliOptions&)> run,
                              const std::function<void(CLI::App*)>& more_options = nullptr);
 
 /// Runs the campaign (campaign::RunCampaign over the MPI ranks of this process, with --force as given): a
-/// progress bar and messages on stderr, the result lines on stdout unless quiet, report.html unless no_plots.
+/// progress bar and messages on stderr, the result lines on stdout unless quiet, report.html unless no_plots,
+/// the cost split on stderr with profile (also when quiet).
 void RunCampaignCommand(io::CampaignCommand command, const CampaignCliOptions& options);
 
 }  // namespace hullopt::app

@@ -7,6 +7,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <exception>
+#include <mutex>
 
 #include "hullopt/version.h"
 #include "io/config/campaign_outputs.h"
@@ -49,7 +51,14 @@ void CampaignRunner::Progress(CampaignProgress::Stage stage) const {
 }
 
 void CampaignRunner::Add(const opt::EvaluationRecord& rec) {
+  const auto t0 = std::chrono::steady_clock::now();
   journal_->Add(rec);
+  if (!rec.replayed && rec.result.cost.measured) {
+    for (int s = 0; s < static_cast<int>(opt::CostStage::kCount); ++s) cost_.seconds[s] += rec.result.cost.seconds[s];
+    ++costed_;
+    costed_wall_s_ += rec.wall_time_s;
+    log_s_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  }
   Progress(CampaignProgress::Stage::kUpdate);
   if (options_.max_evaluations > 0 &&
       static_cast<long>(journal_->records().size()) - journal_->replayed() >= options_.max_evaluations)
@@ -61,7 +70,65 @@ io::InputError CampaignRunner::ResumeError(const opt::ReplayMismatch& e) const {
                         words_.sequence + ": " + e.what() + "; delete the file to start over");
 }
 
+std::vector<nlohmann::json> CampaignRunner::SplitOverThreads(int units, const UnitWork& work) {
+  // The units run on the threads; the head unit (the lowest one not finished) hands its records straight to
+  // Add, later units keep theirs until every unit before them is finished, so Add sees the sequence order of
+  // one thread. Add (the log, progress) runs under the lock, one record at a time.
+  std::vector<nlohmann::json> reports(units);
+  std::vector<std::vector<opt::EvaluationRecord>> waiting(units);
+  std::vector<char> finished(units, 0);
+  int head = 0;
+  std::mutex mutex;
+  std::exception_ptr error;  // the first failure (or EvaluationLimitReached); the other units stop at their next record
+  struct Stopped {};         // thrown into a unit's work once another unit has failed
+  const int nthreads = threads_;
+  (void)nthreads;  // read only by the OpenMP pragma; a build without OpenMP runs the units in order
+#pragma omp parallel for schedule(dynamic, 1) num_threads(nthreads)
+  for (int unit = 0; unit < units; ++unit) {
+    {
+      std::lock_guard<std::mutex> lock(mutex);
+      if (error) continue;
+    }
+    try {
+      opt::RecordSink sink = [&, unit](const opt::EvaluationRecord& rec) {
+        std::lock_guard<std::mutex> lock(mutex);
+        if (error) throw Stopped{};
+        if (unit != head) {
+          waiting[unit].push_back(rec);
+          return;
+        }
+        try {
+          Add(rec);
+        } catch (...) {
+          error = std::current_exception();
+          throw Stopped{};
+        }
+      };
+      nlohmann::json j = work(unit, sink);
+      std::lock_guard<std::mutex> lock(mutex);
+      reports[unit] = std::move(j);
+      finished[unit] = 1;
+      while (!error && head < units && finished[head]) {
+        if (++head == units) break;
+        try {
+          for (const opt::EvaluationRecord& rec : waiting[head]) Add(rec);
+        } catch (...) {
+          error = std::current_exception();
+        }
+        waiting[head].clear();
+      }
+    } catch (const Stopped&) {
+    } catch (...) {
+      std::lock_guard<std::mutex> lock(mutex);
+      if (!error) error = std::current_exception();
+    }
+  }
+  if (error) std::rethrow_exception(error);
+  return reports;
+}
+
 std::vector<nlohmann::json> CampaignRunner::Split(int units, const UnitWork& work) {
+  if (size_ == 1 && threads_ > 1 && units > 1 && evaluator().IsThreadSafe()) return SplitOverThreads(units, work);
   std::vector<nlohmann::json> reports;
   for (int round = 0; round * size_ < units; ++round) {
     const int unit = round * size_ + rank_;
@@ -235,6 +302,7 @@ void CampaignRunner::Finish(CampaignResult* result) {
   if (!resolution_warning.empty()) Note("hullopt: warning: " + resolution_warning);
   kind_.Summarise(*this, best, &s);
   s["wall_time_s"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0_).count();
+  if (options_.profile) s["profile"] = ProfileJson();
   io::WriteJson(io::OutPath(options_.out, "summary.json"), s);
   if (best >= 0) {
     char comment[200];
@@ -271,8 +339,50 @@ void CampaignRunner::Finish(CampaignResult* result) {
   result->text = kind_.ResultText(*this, best, s);
 }
 
+nlohmann::json CampaignRunner::ProfileJson() const {
+  const double n = std::max(1L, costed_);
+  nlohmann::json j;
+  j["evaluations_computed"] = costed_;
+  j["threads"] = threads_;
+  nlohmann::json ms;
+  for (int s = 0; s < static_cast<int>(opt::CostStage::kCount); ++s)
+    ms[opt::CostStageName(static_cast<opt::CostStage>(s))] = 1e3 * cost_.seconds[s] / n;
+  // The evaluation's rest: the mass rule, the envelope, warnings and checks between the stages.
+  ms["other"] = 1e3 * std::max(0.0, costed_wall_s_ - cost_.Sum()) / n;
+  ms["log_io"] = 1e3 * log_s_ / n;
+  j["mean_ms_per_evaluation"] = ms;
+  j["mean_total_ms"] = 1e3 * (std::max(costed_wall_s_, cost_.Sum()) + log_s_) / n;
+  return j;
+}
+
+std::string CampaignRunner::ProfileText() const {
+  const nlohmann::json j = ProfileJson();
+  const double total = j["mean_total_ms"].get<double>();
+  char b[160];
+  std::snprintf(b, sizeof b,
+                "profile: %ld evaluations computed (%d threads); mean wall time per evaluation by stage:\n", costed_,
+                threads_);
+  std::string text = b;
+  std::vector<std::string> stages;
+  for (int s = 0; s < static_cast<int>(opt::CostStage::kCount); ++s)
+    stages.push_back(opt::CostStageName(static_cast<opt::CostStage>(s)));
+  stages.push_back("other");
+  stages.push_back("log_io");
+  for (const std::string& stage : stages) {
+    const double v = j["mean_ms_per_evaluation"][stage].get<double>();
+    std::snprintf(b, sizeof b, "  %-22s %10.3f ms %6.1f %%\n", stage.c_str(), v, total > 0 ? 100.0 * v / total : 0.0);
+    text += b;
+  }
+  std::snprintf(b, sizeof b, "  %-22s %10.3f ms\n", "total", total);
+  return text + b;
+}
+
 CampaignResult CampaignRunner::Result(bool complete) const {
   CampaignResult r;
+  if (options_.profile) {
+    r.profile = ProfileJson();
+    r.profile_text = ProfileText();
+  }
   r.complete = complete;
   r.command = words_.command;
   r.log_path = journal_->path();

@@ -99,6 +99,11 @@ class CampaignRunner {
   /// Collective: units 0..units-1 in rounds of size(), unit round·size + rank on each rank. With one
   /// process the records go straight to Add; with several they travel as log rows and rank 0 adds them after
   /// each round in unit order. Returns the units' reports on rank 0, in unit order (empty on other ranks).
+  /// One process with several threads (and a thread-safe evaluator) runs the units on the threads, one unit
+  /// per thread at a time (the evaluations inside a unit then run on that thread), and adds the records in
+  /// unit order as above: the log is the one of one thread. A unit that finishes before the units ahead of
+  /// it keeps its records in memory until they finish; a kill loses those (they are recomputed on resume).
+  /// `work` must then be safe to call concurrently for different units.
   std::vector<nlohmann::json> Split(int units, const UnitWork& work);
 
  private:
@@ -107,6 +112,7 @@ class CampaignRunner {
   void Start();
   void Finish(CampaignResult* result);
   void Progress(CampaignProgress::Stage stage) const;
+  std::vector<nlohmann::json> SplitOverThreads(int units, const UnitWork& work);
   CampaignResult Result(bool complete) const;
 
   CampaignKind& kind_;
@@ -120,6 +126,12 @@ class CampaignRunner {
   int threads_ = 1, rank_ = 0, size_ = 1;
   std::unique_ptr<opt::ConstraintSet> constraints_;
   std::unique_ptr<CampaignJournal> journal_;
+  // --profile: the stage times of the evaluations computed here, their wall times and the log's writes.
+  opt::EvalCost cost_;
+  long costed_ = 0;
+  double costed_wall_s_ = 0.0, log_s_ = 0.0;
+  nlohmann::json ProfileJson() const;
+  std::string ProfileText() const;
 };
 
 /// Runs one campaign of the given kind end to end (collective). Throws io::InputError for bad input.

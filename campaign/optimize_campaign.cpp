@@ -2,6 +2,7 @@
 // algorithm (multistart, constraints), resumable, spread over processes by multistart run.
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <memory>
@@ -31,7 +32,8 @@ nlohmann::json RecordJson(const opt::EvaluationRecord& rec, long evaluation, con
   return j;
 }
 
-// Evaluation 0 is the base design; then the multistart runs, one unit of work each.
+// Evaluation 0 is the base design; then the multistart runs, one unit of work each: over the threads of one
+// process or the ranks of several (CampaignRunner::Split), logged in run order either way.
 class OptimizeCampaign : public CampaignKind {
  public:
   Words Wording() const override {
@@ -40,11 +42,13 @@ class OptimizeCampaign : public CampaignKind {
   }
   io::CampaignCommand ConfigCommand() const override { return io::CampaignCommand::kOptimize; }
 
-  CampaignSize Size(const LoadedCampaign& lc, int) const override {
+  // The multistart runs run on the threads (CampaignRunner::Split), up to min(threads, starts) at once.
+  CampaignSize Size(const LoadedCampaign& lc, int threads) const override {
     const opt::CampaignDefinition& def = lc.config.definition;
     const long per_run =
         def.stopping.max_evaluations + (def.polish_algorithm.empty() ? 0 : def.polish_max_evaluations);
-    return {1 + static_cast<long>(def.starts) * per_run, lc.config.block + ".starts x max_evaluations", 1};
+    return {1 + static_cast<long>(def.starts) * per_run, lc.config.block + ".starts x max_evaluations",
+            std::max(1, std::min(threads, def.starts))};
   }
 
   // A local algorithm must start from a design that exists and satisfies the constraints; this is checked

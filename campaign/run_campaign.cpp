@@ -58,13 +58,16 @@ CampaignResult RunCampaign(const CampaignSpec& spec, const CampaignRunOptions& o
   }
   // A Pareto sweep: ordinary optimize campaigns, one per point, inside the output folder.
   CampaignResult last;
-  std::string texts;
+  std::string texts, profiles;
+  // The points follow each other (each starts from the front so far); a point's multistart runs share the
+  // threads (CampaignRunner::Split).
   auto run_optimize = [&](const std::string& config, const std::string& out) {
     CampaignRunOptions one = options;
     one.out = out;
     auto kind = MakeOptimizeCampaign();
     last = RunKind(*kind, CampaignSpec::FromFile(io::CampaignCommand::kOptimize, config), one);
     texts += last.text;
+    if (options.profile) profiles += out + ": " + last.profile_text;
     if (!last.complete) throw EvaluationLimitReached{};
   };
   try {
@@ -72,6 +75,7 @@ CampaignResult RunCampaign(const CampaignSpec& spec, const CampaignRunOptions& o
   } catch (const EvaluationLimitReached&) {
   }
   last.text = texts;
+  if (options.profile) last.profile_text = profiles;
   return last;
 }
 

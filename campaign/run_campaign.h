@@ -58,6 +58,10 @@ struct CampaignRunOptions {
   bool quiet = false;          ///< no progress and no messages but the cost estimate
   bool plots = true;           ///< the SVG figures and (through write_report) report.html
   int chunk = 0;               ///< explore under several processes: samples per rank and round (0 = 2 x threads)
+  /// Where the evaluations' time goes: summary.json's `profile` and CampaignResult::profile_text, the mean wall
+  /// time per computed evaluation of each stage of the design evaluation (opt::CostStage) and of writing its log
+  /// row. Under several processes rank 0 counts its own evaluations only.
+  bool profile = false;
   /// Progress of the evaluations (rank 0, unless quiet); may be empty.
   std::function<void(const CampaignProgress&)> progress;
   /// One line each: the cost estimate, notes (resuming) and warnings, as the CLI prints them on stderr
@@ -85,6 +89,8 @@ struct CampaignResult {
   nlohmann::json summary;             ///< summary.json as written (empty when not complete)
   std::string text;                   ///< the result lines the command line prints (empty when not complete)
   std::string sweep;                  ///< a Pareto sweep's result line (printed even when quiet); else empty
+  nlohmann::json profile;             ///< with options.profile: summary.json's `profile` (also when not complete)
+  std::string profile_text;           ///< with options.profile: the same as a table, one stage a line
 };
 
 /// Runs one campaign (collective over options.comm). Throws io::InputError for bad input (the config, the

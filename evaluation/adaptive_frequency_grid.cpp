@@ -5,6 +5,8 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "optimizer/evaluation_cost.h"
+
 namespace hullopt::eval {
 namespace {
 
@@ -213,9 +215,14 @@ AdaptiveGridResult RefineFrequencyGrid(const std::vector<double>& omega_rad_s, c
 
 sk::RaoTable SweepAdaptively(const sk::RaoSweeper& sweeper, const std::vector<double>& omega_rad_s,
                              const AdaptiveGridOptions& options, const GridSeas* seas) {
-  sk::RaoTable t =
-      RefineFrequencyGrid(omega_rad_s, [&](const std::vector<double>& w) { return sweeper.Solve(w); }, options, seas)
-          .rao;
+  // --profile: the solves count as the periodic solve, the rest of the refinement (the seas of every pass) as
+  // the seas.
+  const opt::CostTimer timer(opt::CostStage::kSeas);
+  const auto solve = [&](const std::vector<double>& w) {
+    const opt::CostTimer solve_timer(opt::CostStage::kPeriodicSolve);
+    return sweeper.Solve(w);
+  };
+  sk::RaoTable t = RefineFrequencyGrid(omega_rad_s, solve, options, seas).rao;
   std::vector<std::string> caps = std::move(t.warnings);
   t.warnings = sweeper.Warnings(t, sk::kGridAdvice);
   t.warnings.insert(t.warnings.end(), caps.begin(), caps.end());

@@ -1,9 +1,11 @@
 #include "evaluation/design_case.h"
 
 #include <cmath>
+#include <memory>
 #include <stdexcept>
 
 #include "evaluation/input_error.h"
+#include "optimizer/evaluation_cost.h"
 #include "seakeeping/motions/head_sea_ship_model.h"
 #include "seakeeping/motions/periodic_motion_solver.h"
 #include "seakeeping/motions/rao_checks.h"
@@ -19,6 +21,15 @@ void AddValidityWarnings(const DesignCase& d, sk::RaoTable* t) {
   if (d.solver.rao.method != sk::RaoSolverOptions::Method::kTimeDomainStrip) return;
   for (auto& w : sk::ValidityWarnings(d.speed_m_s, d.hydrostatics.L_m, d.water.g_m_s2, t->omega_rad_s))
     t->warnings.push_back(std::move(w));
+}
+
+// The kernel builder, its time counted as the kernel build (--profile) rather than the solver's set-up.
+sk::StripKernelBuilder TimedKernelBuilder(const DesignCase& d) {
+  return [inner = sk::TransientGreenKernelBuilder(d.solver.sectional_force, d.solver.body_potential)](
+             sk::StripKernel* k) {
+    const opt::CostTimer timer(opt::CostStage::kKernelBuild);
+    inner(k);
+  };
 }
 
 template <class F>
@@ -85,14 +96,22 @@ sk::RaoTable ComputeDesignRaos(const DesignCase& d, const std::vector<double>& o
   const double cs = cs_override >= 0.0 ? cs_override : d.solver.cs();
   return Guard(d, [&] {
     sk::RaoTable t;
+    // sk::ComputeRaos's steps, each timed for --profile: the set-up (panelling, the kernel build timed inside
+    // it), the solve.
+    std::unique_ptr<sk::RaoSweeper> sweeper;
+    {
+      const opt::CostTimer timer(opt::CostStage::kPanelling);
+      sweeper = std::make_unique<sk::RaoSweeper>(d.running_hull, d.mass, d.speed_m_s, d.water.rho_kg_m3,
+                                                 d.water.g_m_s2, SolverOptions(d, cs), TimedKernelBuilder(d));
+    }
     if (!d.solver.grid.enabled) {
-      t = sk::ComputeRaos(d.running_hull, d.mass, d.speed_m_s, d.water.rho_kg_m3, d.water.g_m_s2, omega_rad_s,
-                          SolverOptions(d, cs), sk::TransientGreenKernelBuilder(d.solver.sectional_force, d.solver.body_potential));
+      {
+        const opt::CostTimer timer(opt::CostStage::kPeriodicSolve);
+        t = sweeper->Solve(omega_rad_s);
+      }
+      t.warnings = sweeper->Warnings(t, sk::kGridAdvice);
     } else {
-      const sk::RaoSweeper sweeper(d.running_hull, d.mass, d.speed_m_s, d.water.rho_kg_m3, d.water.g_m_s2,
-                                   SolverOptions(d, cs),
-                                   sk::TransientGreenKernelBuilder(d.solver.sectional_force, d.solver.body_potential));
-      t = SweepAdaptively(sweeper, omega_rad_s, d.solver.grid, seas);
+      t = SweepAdaptively(*sweeper, omega_rad_s, d.solver.grid, seas);
     }
     t.warnings.insert(t.warnings.begin(), d.input_warnings.begin(), d.input_warnings.end());
     AddValidityWarnings(d, &t);

@@ -10,6 +10,7 @@
 #include "evaluation/oblique_design.h"
 #include "evaluation/oblique_point_response.h"
 #include "evaluation/validity_envelope.h"
+#include "optimizer/evaluation_cost.h"
 
 namespace hullopt::eval {
 namespace {
@@ -59,6 +60,7 @@ class MsiEvaluator : public opt::Evaluator, public ResolutionCheckable {
         r.sea_values = ObliqueSeaValues(d);
       } else {
         rao = DesignRaos(d);
+        const opt::CostTimer timer(opt::CostStage::kSeas);
         if (IsOperability())
           op = sk::EvaluateOperability(rao, d.Extent(), o_.diagram, o_.criteria, {}, o_.evaluation);
         else
@@ -92,6 +94,7 @@ class MsiEvaluator : public opt::Evaluator, public ResolutionCheckable {
     // Calm-water resistance at the design speed (about 2 ms CPU for the default catamaran, bench_resistance).
     res::ResistanceAtSpeed rs;
     try {
+      const opt::CostTimer timer(opt::CostStage::kResistance);
       rs = res::CalmWaterResistance(d.hull, o_.resistance).At(d.speed_m_s, d.water.rho_kg_m3, d.water.g_m_s2);
     } catch (const std::invalid_argument& e) {
       r.produced = false;
@@ -183,8 +186,10 @@ class MsiEvaluator : public opt::Evaluator, public ResolutionCheckable {
       if (f.campaign_variable) names.push_back(f.name);
     return names;
   }
-  // The strip kernel runs OpenMP-parallel inside; evaluations run one at a time.
-  bool IsThreadSafe() const override { return false; }
+  // Evaluate changes nothing of the evaluator and the chain below it keeps its scratch per thread, so designs
+  // may be evaluated concurrently (explore's samples, optimize's multistart runs); the strip kernel's own
+  // parallel loops then run on the design's thread.
+  bool IsThreadSafe() const override { return true; }
 
  private:
   // The per-sea values Σ_h w_h v_h by the oblique-sea strip theory (MsiObjectiveOptions::headings_deg): v_h
@@ -192,8 +197,12 @@ class MsiEvaluator : public opt::Evaluator, public ResolutionCheckable {
   // -1), all on the hull's centreline at the CG's height, in the long-crested sea travelling at heading h.
   std::vector<double> ObliqueSeaValues(const DesignCase& d) const {
     const std::vector<double> omega = SeaFrequencies(d);
-    const sk::ObliqueStripResult result =
-        SolveObliqueDesign(d, d.speed_m_s, omega, o_.headings_deg, DefaultRollRadiusOfGyration(d.hull));
+    sk::ObliqueStripResult result;
+    {
+      const opt::CostTimer timer(opt::CostStage::kObliqueSolve);
+      result = SolveObliqueDesign(d, d.speed_m_s, omega, o_.headings_deg, DefaultRollRadiusOfGyration(d.hull));
+    }
+    const opt::CostTimer timer(opt::CostStage::kSeas);
     std::vector<ShipPoint> points;
     for (const auto& p : sk::StandardPassengerPositions(d.Extent().cg_to_transom_m))
       points.push_back({p.name, p.x_from_cg_m, 0.0, 0.0});
@@ -264,13 +273,7 @@ bool MsiObjectiveOptions::IsValid(std::string* error) const {
   if (e.empty() && !seas.empty() && !(sea_sum > 0.0)) e = "sea_weights: at least one weight must be > 0";
   if (e.empty() && !headings_deg.empty() && measure != Measure::kMsi && measure != Measure::kRmsAccel)
     e = "headings_deg: applies to the measures msi and rms_accel only";
-  for (std::size_t i = 0; i < headings_deg.size() && e.empty(); ++i) {
-    if (!(headings_deg[i] >= 0.0 && headings_deg[i] < 360.0))
-      e = "headings_deg[" + std::to_string(i) + "] = " + num(headings_deg[i]) + ": must be within [0, 360)";
-    for (std::size_t j = 0; j < i && e.empty(); ++j)
-      if (headings_deg[j] == headings_deg[i])
-        e = "headings_deg[" + std::to_string(i) + "] = " + num(headings_deg[i]) + ": given twice";
-  }
+  if (e.empty()) e = CheckHeadingList(headings_deg, "headings_deg");
   if (e.empty() && !heading_weights.empty()) {
     double sum = 0.0;
     if (heading_weights.size() != headings_deg.size())

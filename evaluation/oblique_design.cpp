@@ -10,6 +10,20 @@
 
 namespace hullopt::eval {
 
+std::string CheckHeadingList(const std::vector<double>& headings_deg, const std::string& key) {
+  auto entry = [&](std::size_t i) {
+    std::ostringstream os;
+    os << key << "[" << i << "] = " << headings_deg[i];
+    return os.str();
+  };
+  for (std::size_t i = 0; i < headings_deg.size(); ++i) {
+    if (!(headings_deg[i] >= 0.0 && headings_deg[i] < 360.0)) return entry(i) + ": must be within [0, 360)";
+    for (std::size_t j = 0; j < i; ++j)
+      if (headings_deg[j] == headings_deg[i]) return entry(i) + ": given twice";
+  }
+  return "";
+}
+
 double DefaultRollRadiusOfGyration(const hull::HullForm& hull) {
   double half_beam = 0.0;
   for (const auto& body : hull.bodies)

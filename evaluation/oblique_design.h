@@ -11,6 +11,11 @@
 
 namespace hullopt::eval {
 
+/// The rule of a list of wave headings [deg] (an options struct's field named `key`, e.g. "headings_deg"): each
+/// within [0, 360), none twice. Returns "" or the first fault, naming the entry and its value
+/// ("headings_deg[1] = 360: must be within [0, 360)").
+std::string CheckHeadingList(const std::vector<double>& headings_deg, const std::string& key);
+
 /// The roll radius of gyration taken when none is given: 0.35 × the overall beam of the hull's offsets (every
 /// body at its lateral position), the usual estimate for ships and small craft [m].
 double DefaultRollRadiusOfGyration(const hull::HullForm& hull);

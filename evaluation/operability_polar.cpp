@@ -46,13 +46,7 @@ bool PolarOptions::IsValid(std::string* error) const {
     if (!(speeds_m_s[i] >= 0.0) || !std::isfinite(speeds_m_s[i]))
       e = "speeds[" + std::to_string(i) + "] = " + Num(speeds_m_s[i]) + " m/s: must be finite and >= 0";
   if (e.empty() && headings_deg.empty()) e = "headings_deg: the list is empty";
-  for (std::size_t i = 0; i < headings_deg.size() && e.empty(); ++i) {
-    if (!(headings_deg[i] >= 0.0 && headings_deg[i] < 360.0))
-      e = "headings_deg[" + std::to_string(i) + "] = " + Num(headings_deg[i]) + ": must be within [0, 360)";
-    for (std::size_t j = 0; j < i && e.empty(); ++j)
-      if (headings_deg[j] == headings_deg[i])
-        e = "headings_deg[" + std::to_string(i) + "] = " + Num(headings_deg[i]) + ": given twice";
-  }
+  if (e.empty()) e = CheckHeadingList(headings_deg, "headings_deg");
   if (e.empty() && omega_rad_s.size() < 2) e = "omega: at least 2 wave frequencies are needed";
   for (std::size_t i = 0; i < omega_rad_s.size() && e.empty(); ++i)
     if (!(omega_rad_s[i] > 0.0) || !std::isfinite(omega_rad_s[i]) || (i > 0 && !(omega_rad_s[i] > omega_rad_s[i - 1])))

@@ -7,6 +7,7 @@
 #include "evaluation/design_spec.h"
 #include "evaluation/hull_plausibility.h"
 #include "evaluation/input_error.h"
+#include "optimizer/evaluation_cost.h"
 #include "parametric_hull/plausibility.h"
 
 namespace hullopt::eval {
@@ -52,6 +53,7 @@ std::vector<const hull::DesignVariableField*> TrialFields(const std::vector<std:
 
 DesignCase BuildTrialDesign(const DesignBasis& b, const std::vector<const hull::DesignVariableField*>& fields,
                             const std::vector<double>& x, const std::string& name) {
+  const opt::CostTimer timer(opt::CostStage::kAttitude);  // all but the hull generation, timed inside
   const std::string& file = b.config_file;
   hull::DesignVariables v = b.variables;
   for (std::size_t i = 0; i < fields.size(); ++i) {
@@ -70,7 +72,10 @@ DesignCase BuildTrialDesign(const DesignBasis& b, const std::vector<const hull::
   d.water = b.water;
   d.solver = b.solver;
   d.has_frequencies = b.has_frequencies;
-  d.hull = GenerateParametricHull(v, file, &d.input_warnings);
+  {
+    const opt::CostTimer hull_timer(opt::CostStage::kHullGeneration);
+    d.hull = GenerateParametricHull(v, file, &d.input_warnings);
+  }
   try {
     d.hydrostatics = hull::ComputeHydrostatics(d.hull, d.water.rho_kg_m3);
   } catch (const std::exception& e) {

@@ -1,11 +1,15 @@
 #include "optimizer/evaluator.h"
 
+#include "optimizer/evaluation_cost.h"
+
 #include <cmath>
 #include <stdexcept>
 
 namespace hullopt::opt {
 
-EvalResult EvaluateSafely(Evaluator& evaluator, const std::vector<double>& x) {
+namespace {
+
+EvalResult Checked(Evaluator& evaluator, const std::vector<double>& x) {
   EvalResult r;
   try {
     r = evaluator.Evaluate(x);
@@ -48,6 +52,15 @@ EvalResult EvaluateSafely(Evaluator& evaluator, const std::vector<double>& x) {
   };
   if (refuse_non_finite(r.sea_values, evaluator.SeaNames())) return r;
   if (refuse_non_finite(r.quantities, evaluator.QuantityNames())) return r;
+  return r;
+}
+
+}  // namespace
+
+EvalResult EvaluateSafely(Evaluator& evaluator, const std::vector<double>& x) {
+  (void)TakeThreadCost();  // what an earlier call on this thread left outside an evaluation
+  EvalResult r = Checked(evaluator, x);
+  r.cost = TakeThreadCost();
   return r;
 }
 

@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include "optimizer/evaluation_cost.h"
+
 namespace hullopt::opt {
 
 /// Result of one evaluation of a design.
@@ -26,6 +28,8 @@ struct EvalResult {
   /// A produced design's non-fatal note (e.g. near-singular strip sections, whose RAOs may be unconverged);
   /// empty when there is none. history.csv carries it in `message` as "warning: ...".
   std::string warning;
+  /// Wall time of the evaluation's stages (EvaluateSafely fills it; not logged, not compared).
+  EvalCost cost;
 };
 
 /// A design evaluation. Implementations must be deterministic (same x → same result, bit for bit) and, if

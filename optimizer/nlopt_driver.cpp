@@ -139,6 +139,7 @@ EvaluationRecord NloptDriver::Evaluate(int run, int step, const std::vector<doub
   rec.x = x;
   if (has_baseline_ && SameBits(baseline_.x, x.data(), static_cast<unsigned>(x.size()))) {
     rec.result = baseline_.result;  // the base design, already evaluated as the baseline
+    rec.result.cost = EvalCost{};   // not computed again (--profile counts it once)
     rec.feasible = baseline_.feasible;
     return rec;
   }

@@ -105,6 +105,8 @@ bool ObliqueStripOptions::IsValid(std::string* error) const {
     os << "g_m_s2 = " << g_m_s2 << " must be a finite number > 0";
   else if (!Finite(speed_m_s))
     os << "speed_m_s = " << speed_m_s << " must be finite";
+  else if (!(damping_cs >= 0.0) || !Finite(damping_cs))
+    os << "damping_cs = " << damping_cs << " must be a finite number >= 0";
   else if (!section.IsValid(&section_error))
     os << "section: " << section_error;
   else if (roll_damping.model != RollDampingModel::kNone && !roll_damping.IsValid(&section_error))
@@ -186,6 +188,24 @@ std::vector<SectionHydrodynamics> SolveSections(const std::vector<ObliqueStripSt
   return hydro;
 }
 
+// body(i) for i = 0 .. n-1 in one parallel loop over the frequencies (or (heading, frequency) pairs); each i
+// writes its own results only, so they are the same bits for any thread count. An exception is rethrown
+// after the loop, the one of the lowest i (the one a serial loop would meet first).
+template <class Body>
+void ForEachFrequency(int n, const Body& body) {
+  std::vector<std::exception_ptr> failures(static_cast<std::size_t>(n));
+#pragma omp parallel for schedule(dynamic, 1)
+  for (int i = 0; i < n; ++i) {
+    try {
+      body(i);
+    } catch (...) {
+      failures[i] = std::current_exception();
+    }
+  }
+  for (const std::exception_ptr& f : failures)
+    if (f) std::rethrow_exception(f);
+}
+
 // The sectional coefficients about the CG's height and their strip sums (no speed terms) at one frequency,
 // from hydro[first .. first + wet.size()).
 ObliqueFrequencyResult FrequencyCoefficients(const std::vector<ObliqueStripStation>& stations,
@@ -242,11 +262,62 @@ void AddLongitudinalFroudeKrylov(const std::vector<Panel>& panels, double k, dou
   wr.froude_krylov[5] -= phase * ikc * m[1];
 }
 
+// Waterline integrals of one section (closed by its waterline): ∫_wl f(y) dy = −∮ f(y) n_z ds (the lid's normal
+// is +z and ∮ f(y) n_z ds over the closed section vanishes), for f = 1 (the breadth, exact) and e^{−ik_y y}
+// (Gauss–Legendre along each panel, as SectionPressureMoments).
+struct WaterlineIntegrals {
+  double breadth = 0.0;  // [m]
+  C wave;                // [m] ∫_wl e^{−ik_y y} dy
+};
+WaterlineIntegrals SectionWaterline(const std::vector<Panel>& panels, double ky) {
+  const QuadratureRule& rule = GaussLegendre01(8);
+  WaterlineIntegrals out;
+  for (const Panel& p : panels) {
+    const double nzl = p.Normal()[1] * p.Length();
+    out.breadth -= nzl;
+    const int parts = 1 + static_cast<int>(std::fabs(ky * (p.y2 - p.y1)) / 0.5);
+    for (int part = 0; part < parts; ++part)
+      for (std::size_t q = 0; q < rule.nodes.size(); ++q) {
+        const double t = (part + rule.nodes[q]) / parts;
+        out.wave += std::polar(-nzl * rule.weights[q] / parts, -ky * (p.y1 + t * (p.y2 - p.y1)));
+      }
+  }
+  return out;
+}
+
+// The paper's sectional damping D = ½ Cs ρ U B (v − ζ_t) against the section's vertical velocity v = ẋ3 − ξ ẋ5
+// + U x5 relative to the incident surface (head_sea_ship_model.h), ζ_t = iω ζ its earth-frame rate averaged over
+// the section's waterline (the oblique wave varies across it): a heave–pitch damping matrix, a U x5 restoring
+// part and a wave excitation. At β = 180° they are the head-sea path's terms. Roll keeps the roll damping model
+// (roll_damping.h), whose multihull form is this term's roll analogue (the demihulls' heave, v = y ẋ4), so it is
+// not counted twice. Adds to wr.cs_damping, cs_restoring and cs_excitation.
+void AddCsDamping(const std::vector<ObliqueStripStation>& stations, double x_g_m, double k, double w,
+                  double beta, const ObliqueStripOptions& options, ObliqueWaveResult& wr) {
+  const double damp = 0.5 * options.damping_cs * options.rho_kg_m3 * options.speed_m_s;
+  const double U = options.speed_m_s, ky = k * std::sin(beta);
+  for (const ObliqueStripStation& st : stations) {
+    if (st.panels.empty()) continue;
+    const WaterlineIntegrals wl = SectionWaterline(st.panels, ky);
+    const double xi = st.x_m - x_g_m, d = damp * st.weight_m * wl.breadth;
+    // Heave (index 2) and pitch (4): the section's vertical velocity per unit ẋ3 is 1, per unit ẋ5 −ξ.
+    wr.cs_damping(2, 2) += d;
+    wr.cs_damping(2, 4) -= d * xi;
+    wr.cs_damping(4, 2) -= d * xi;
+    wr.cs_damping(4, 4) += d * xi * xi;
+    wr.cs_restoring(2, 4) += d * U;
+    wr.cs_restoring(4, 4) -= d * U * xi;
+    const C surface = C(0.0, w) * damp * st.weight_m * wl.wave * std::polar(1.0, -k * xi * std::cos(beta));
+    wr.cs_excitation[2] += surface;
+    wr.cs_excitation[4] -= surface * xi;
+  }
+}
+
 // Excitation = Froude–Krylov + diffraction, then the 5-dof solve; rotations per wave slope kA.
 void SolveWave(const Eigen::PartialPivLU<Eigen::MatrixXcd>& lu, double k, ObliqueWaveResult& wr) {
   Eigen::VectorXcd rhs(5);
   for (int d = 1; d < 6; ++d) {
     wr.excitation[d] = wr.froude_krylov[d] + wr.diffraction[d];
+    if (wr.cs_excitation[d] != C(0.0)) wr.excitation[d] += wr.cs_excitation[d];
     rhs[d - 1] = wr.excitation[d];
   }
   const Eigen::VectorXcd x = lu.solve(rhs);
@@ -313,9 +384,10 @@ void SolveAtSpeed(const std::vector<ObliqueStripStation>& stations, const std::v
       if (it == distinct.end()) distinct.push_back(we);
     }
   const std::vector<SectionHydrodynamics> hydro = SolveSections(stations, wet, distinct, so);
-  for (std::size_t e = 0; e < distinct.size(); ++e)
-    out.frequencies.push_back(
-        FrequencyCoefficients(stations, wet, hydro, e * ns, distinct[e], g, mass.x_g_m, zg));
+  out.frequencies.resize(distinct.size());
+  ForEachFrequency(static_cast<int>(distinct.size()), [&](int e) {
+    out.frequencies[e] = FrequencyCoefficients(stations, wet, hydro, e * ns, distinct[e], g, mass.x_g_m, zg);
+  });
   // Stations bow to stern (the order the strip passes them), and each one's wet index (−1: dry).
   std::vector<int> order(stations.size()), wet_index(stations.size(), -1);
   for (std::size_t n = 0; n < order.size(); ++n) order[n] = static_cast<int>(n);
@@ -324,8 +396,9 @@ void SolveAtSpeed(const std::vector<ObliqueStripStation>& stations, const std::v
   for (std::size_t s = 0; s < ns; ++s) wet_index[wet[s]] = static_cast<int>(s);
 
   out.waves.resize(nh * nf);
-  for (std::size_t hd = 0; hd < nh; ++hd)
-    for (std::size_t f = 0; f < nf; ++f) {
+  ForEachFrequency(static_cast<int>(nh * nf), [&](int job) {
+    const std::size_t hd = job / nf, f = job % nf;
+    {  // one (heading, frequency) pair
       const std::size_t e = entry[hd * nf + f];
       const ObliqueFrequencyResult& fr = out.frequencies[e];
       const double w = omegas[f], k = w * w / g, we = distinct[e], beta = headings_deg[hd] * M_PI / 180.0;
@@ -376,9 +449,17 @@ void SolveAtSpeed(const std::vector<ObliqueStripStation>& stations, const std::v
       wr.added_mass = force.real() / (we * we);
       wr.damping = -force.imag() / we;
       wr.viscous_roll_damping = ViscousRollB44(options, we);
-      SolveWave(MotionMatrix(we, out.mass, wr.added_mass, wr.damping, out.restoring, wr.viscous_roll_damping),
-                k, wr);
+      if (options.damping_cs > 0.0) {
+        AddCsDamping(stations, mass.x_g_m, k, w, beta, options, wr);
+        SolveWave(MotionMatrix(we, out.mass, wr.added_mass, wr.damping + wr.cs_damping,
+                               out.restoring + wr.cs_restoring, wr.viscous_roll_damping),
+                  k, wr);
+      } else {
+        SolveWave(MotionMatrix(we, out.mass, wr.added_mass, wr.damping, out.restoring, wr.viscous_roll_damping),
+                  k, wr);
+      }
     }
+  });
 }
 
 }  // namespace
@@ -428,9 +509,10 @@ ObliqueStripResult SolveObliqueStripTheory(const std::vector<ObliqueStripStation
   const std::vector<SectionHydrodynamics> hydro = SolveSections(stations, wet, omegas, so);
   const std::size_t nh = headings_deg.size();
   out.waves.resize(nh * nf);
-  for (int f = 0; f < nf; ++f) {
-    const ObliqueFrequencyResult& fr = out.frequencies.emplace_back(
-        FrequencyCoefficients(stations, wet, hydro, f * ns, omegas[f], g, mass.x_g_m, zg));
+  out.frequencies.resize(nf);
+  ForEachFrequency(nf, [&](int f) {
+    const ObliqueFrequencyResult& fr = out.frequencies[f] =
+        FrequencyCoefficients(stations, wet, hydro, f * ns, omegas[f], g, mass.x_g_m, zg);
     const double w = omegas[f], k = fr.k_per_m;
     const double viscous_b44 = ViscousRollB44(options, w);
     const auto lu = MotionMatrix(w, out.mass, fr.added_mass, fr.damping, out.restoring, viscous_b44);
@@ -459,7 +541,7 @@ ObliqueStripResult SolveObliqueStripTheory(const std::vector<ObliqueStripStation
       }
       SolveWave(lu, k, wr);
     }
-  }
+  });
   return out;
 }
 

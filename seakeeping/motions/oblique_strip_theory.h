@@ -78,6 +78,12 @@ struct ObliqueStripOptions {
   /// section: with it the long-wave pitch RAO tends to 1; without it (conventional STF, n_x neglected) to
   /// I_L/(I_L + V(z_B − z_G)). Diffraction and radiation keep the strip normals either way.
   bool longitudinal_froude_krylov = true;
+  /// Cs [-] of the paper's empirical sectional damping D = ½ Cs ρ U B (v − ζ_t) on heave and pitch
+  /// (head_sea_ship_model.h; the value the head-sea path uses or `hullopt calibrate` fits), with the incident
+  /// surface's rate averaged over each section's waterline. Roll's viscous damping is roll_damping's (for a
+  /// multihull the same Cs term through the demihulls' heave). Only at speed (it is ∝ U). 0, the default: none,
+  /// every result bitwise as without it.
+  double damping_cs = 0.0;
   /// Settings of the 2D section solver (its rho and g are replaced by the two above).
   FrequencyDomainOptions section;
   /// Viscous roll damping (roll_damping.h; its rho and g are replaced by the two above) of the hull described
@@ -136,9 +142,14 @@ struct ObliqueWaveResult {
   Matrix6d added_mass = Matrix6d::Zero();  ///< A_jk at ω_e with the speed terms (U = 0: the entry's)
   Matrix6d damping = Matrix6d::Zero();     ///< B_jk likewise (potential damping only)
   double viscous_roll_damping = 0.0;       ///< [N m s] the viscous B44 added to damping(3, 3) in the solve
+  /// The Cs damping (ObliqueStripOptions::damping_cs; zero without it), added to damping, restoring and the
+  /// excitation in the solve: B_jk of heave and pitch, its U x5 part C_j5, and its wave part.
+  Matrix6d cs_damping = Matrix6d::Zero();
+  Matrix6d cs_restoring = Matrix6d::Zero();
+  std::array<std::complex<double>, 6> cs_excitation{};
   std::array<std::complex<double>, 6> froude_krylov{};
   std::array<std::complex<double>, 6> diffraction{};
-  std::array<std::complex<double>, 6> excitation{};
+  std::array<std::complex<double>, 6> excitation{};  ///< froude_krylov + diffraction + cs_excitation
   std::array<std::complex<double>, 6> rao{};
 };
 

@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
 # Kill/resume: a campaign killed with SIGKILL at a random moment (twice) and restarted with the same command
 # ends with exactly the history of an uninterrupted run: same rows, none lost, none duplicated, nothing that
-# was logged recomputed. Also: an incomplete last line is discarded, and a changed config is refused.
+# was logged recomputed; the killed and resumed runs use 2 threads, so the two multistart runs run side by side
+# (CampaignRunner::Split) and the second one's rows wait for the first. Also: an incomplete last line is
+# discarded, and a changed config is refused.
 # Usage: bash tests/cli/optimize_kill_resume.sh /path/to/hullopt
 set -u
 HULLOPT=${1:?usage: $0 /path/to/hullopt}
@@ -20,7 +22,7 @@ write_rosenbrock_campaign "$work/fast.yaml" 0 120
 # loaded machine), then let it finish.
 kills=0
 for attempt in 1 2 3 4 5 6; do
-  "$HULLOPT" optimize "$work/slow.yaml" --out "$work/run" --quiet &
+  "$HULLOPT" optimize "$work/slow.yaml" --out "$work/run" --threads 2 --quiet &
   pid=$!
   sleep "$(( attempt / 3 )).$(( (RANDOM % 9) + 1 ))$(( RANDOM % 10 ))"
   kill -9 "$pid" 2>/dev/null
@@ -35,7 +37,7 @@ done
 # Simulate a kill in the middle of writing a row.
 rows_before=$(( $(wc -l < "$work/run/history.csv") - 1 ))
 printf '%s' "$rows_before,0.12345,0.6" >> "$work/run/history.csv"
-"$HULLOPT" optimize "$work/slow.yaml" --out "$work/run" 2> "$work/resume.log" > /dev/null || {
+"$HULLOPT" optimize "$work/slow.yaml" --out "$work/run" --threads 2 2> "$work/resume.log" > /dev/null || {
   cat "$work/resume.log" >&2; fail "resumed run failed"; }
 grep -q "resuming: $rows_before evaluations" "$work/resume.log" || { cat "$work/resume.log" >&2; fail "no resume message"; }
 grep -q "incomplete last row" "$work/resume.log" || fail "truncated last row not reported"

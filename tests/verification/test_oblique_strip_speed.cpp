@@ -103,14 +103,18 @@ TEST_CASE("oblique strip theory at U = 0: bit for bit the zero-speed path") {
     }
 }
 
-TEST_CASE("oblique strip theory in head seas at speed: heave and pitch of the head-sea STF method") {
+namespace {
+// The oblique path at β = 180° against the head-sea STF method with the same Cs damping on both sides (the
+// head-sea model's sectional damping ½ Cs ρ U B (v − ζ_t), head_sea_ship_model.h; the oblique path's
+// ObliqueStripOptions::damping_cs, its own assembly of the same term).
+void CompareWithHeadSeaStf(double cs) {
   sk::StripGeometryOptions geo;
   geo.sections = 20;
   geo.panels = 12;
   const double U = 0.5 * std::sqrt(kG * 3.0);  // Fn 0.5
   const auto g = sk::StripKernelGeometry(Delft372Demihull(), geo, U, kRho, kG);
   sk::MotionOptions mo;
-  mo.damping_cs = 0.0;  // the empirical Cs damping is not part of the oblique method
+  mo.damping_cs = cs;
   const hull::MassProperties mp{43.535, 1.41, 0.782, 0.34};
   const sk::HeadSeaShipModel model(g, mp, mo);
   const std::vector<double> omegas{2.0, 3.0, 4.0, 5.0, 6.0, 8.0};
@@ -130,6 +134,7 @@ TEST_CASE("oblique strip theory in head seas at speed: heave and pitch of the he
   m.inertia_kg_m2.diagonal() << mp.mass_kg * 0.01, mp.mass_kg * mp.kyy_m * mp.kyy_m, mp.mass_kg * 0.5;
   auto o = Options(U);
   o.longitudinal_froude_krylov = false;
+  o.damping_cs = cs;
   const auto r = sk::SolveObliqueStripTheory(st, m, omegas, {180.0}, o);
   double depth = 0.0;  // the largest vertical extent of a panel
   for (const auto& s : st)
@@ -155,22 +160,39 @@ TEST_CASE("oblique strip theory in head seas at speed: heave and pitch of the he
     for (int i = 0; i < 2; ++i)
       for (int j = 0; j < 2; ++j) {
         const double l = i + j == 1 ? 3.0 : 1.0;  // a length to compare A35 with A33, A55 (L ≈ 3 m)
-        CHECK(std::fabs(w.added_mass(idx[i], idx[j]) - c.A(i, j)) < kRows * a_scale * l);
-        CHECK(std::fabs(w.damping(idx[i], idx[j]) - c.B(i, j)) < kRows * b_scale * l);
+        // c.A and c.B are the strip force's in-phase and quadrature parts, so c.A also holds the Cs term's
+        // U x5 part, which the oblique result keeps as a restoring term: A − C_cs/ω_e².
+        const double a_cs = w.cs_restoring(idx[i], idx[j]) / (w.omega_e_rad_s * w.omega_e_rad_s);
+        CHECK(std::fabs(w.added_mass(idx[i], idx[j]) - a_cs - c.A(i, j)) < kRows * a_scale * l);
+        // c.B includes the Cs damping, the oblique result keeps it apart.
+        CHECK(std::fabs(w.damping(idx[i], idx[j]) + w.cs_damping(idx[i], idx[j]) - c.B(i, j)) <
+              kRows * b_scale * l);
       }
     const double k = omegas[f] * omegas[f] / kG;
     const double tol_wave = std::max(1e-5, 1.5 * k * depth * k * depth / 24.0);
     CHECK(std::abs(w.froude_krylov[2] - c.froude_krylov[0]) < 1e-9 * std::abs(c.froude_krylov[0]));
     CHECK(std::abs(w.diffraction[2] - c.diffraction[0]) < tol_wave * std::abs(c.diffraction[0]));
     CHECK(std::abs(w.diffraction[4] - c.diffraction[1]) < tol_wave * std::abs(c.diffraction[1]));
+    CHECK(std::abs(w.excitation[2] - c.Exciting(0)) < tol_wave * std::abs(c.Exciting(0)));
+    CHECK(std::abs(w.excitation[4] - c.Exciting(1)) < tol_wave * std::abs(c.Exciting(1)));
     CHECK(std::abs(w.rao[2] - stf_rao.heave[f]) < tol_wave * std::abs(stf_rao.heave[f]));
     CHECK(std::abs(w.rao[4] - stf_rao.pitch[f]) < tol_wave * std::abs(stf_rao.pitch[f]));
     std::printf("omega %.1f heave %.6f %.6f pitch %.6f %.6f  dA33 %.2e dB35 %.2e dF3 %.2e\n", omegas[f],
                 std::abs(w.rao[2]), std::abs(stf_rao.heave[f]), std::abs(w.rao[4]),
                 std::abs(stf_rao.pitch[f]), std::fabs(w.added_mass(2, 2) - c.A(0, 0)) / a_scale,
-                std::fabs(w.damping(2, 4) - c.B(0, 1)) / b_scale,
+                std::fabs(w.damping(2, 4) + w.cs_damping(2, 4) - c.B(0, 1)) / b_scale,
                 std::abs(w.excitation[2] - c.Exciting(0)) / std::abs(c.Exciting(0)));
   }
+}
+}  // namespace
+
+TEST_CASE("oblique strip theory in head seas at speed: heave and pitch of the head-sea STF method") {
+  CompareWithHeadSeaStf(0.0);
+}
+
+TEST_CASE("oblique strip theory in head seas at speed with Cs damping: the head-sea STF method's") {
+  // Cs 0.1, near the top of the paper's range (0–0.15), so that the term moves the heave peak.
+  CompareWithHeadSeaStf(0.1);
 }
 
 TEST_CASE(
@@ -321,4 +343,45 @@ TEST_CASE("oblique strip theory at speed refuses an encounter frequency <= 0") {
                   std::domain_error);
   CHECK_NOTHROW(sk::SolveObliqueStripTheory(test::WigleyObliqueStations(8, 8), test::WigleyObliqueMass(0.13),
                                             {4.0}, {90.0}, Options(U)));
+}
+
+TEST_CASE("oblique strip theory Cs damping on a box in beam seas: the waterline closed forms") {
+  // A box barge, L 10 m, B 2 m, T 0.5 m, 21 stations on cell faces (trapezoid weights: constants integrate
+  // exactly), at 2 m/s in beam seas (β = 90°, ω_e = ω). The Cs term's heave damping is ½ Cs ρ U ∫B dx = ½ Cs ρ
+  // U B L and its wave part iω ½ Cs ρ U L ∫_{−B/2}^{B/2} e^{−iky} dy = iω ½ Cs ρ U L B sin(kB/2)/(kB/2)
+  // (the wave varies across the waterline; along the hull it has one phase in beam seas). Tolerances: 1e-12
+  // relative for sums of exact terms; 1e-10 for the Gauss–Legendre waterline integral of a smooth exponential.
+  constexpr double L = 10.0, B = 2.0, T = 0.5, U = 2.0, cs = 0.1, w = 2.0;
+  constexpr int kStations = 21;
+  std::vector<sk::ObliqueStripStation> st;
+  for (int n = 0; n < kStations; ++n) {
+    const double dx = L / (kStations - 1);
+    sk::ObliqueStripStation s;
+    s.x_m = n * dx;
+    s.weight_m = (n == 0 || n == kStations - 1) ? 0.5 * dx : dx;
+    // Port waterline → keel → starboard waterline, several panels on the bottom.
+    s.panels.push_back({0.5 * B, 0.0, 0.5 * B, -T});
+    for (int j = 0; j < 4; ++j)
+      s.panels.push_back({0.5 * B - j * B / 4, -T, 0.5 * B - (j + 1) * B / 4, -T});
+    s.panels.push_back({-0.5 * B, -T, -0.5 * B, 0.0});
+    st.push_back(s);
+  }
+  sk::ObliqueMassProperties m;
+  m.mass_kg = kRho * L * B * T;
+  m.x_g_m = 0.5 * L;
+  m.z_g_m = -0.5 * T;
+  m.inertia_kg_m2.diagonal() << m.mass_kg * 0.16, m.mass_kg * 8.3, m.mass_kg * 8.3;
+  auto o = Options(U);
+  o.damping_cs = cs;
+  const auto r = sk::SolveObliqueStripTheory(st, m, {w}, {90.0}, o);
+  const auto& wr = r.Wave(0, 0);
+  const double damp = 0.5 * cs * kRho * U, k = w * w / kG;
+  CHECK(wr.cs_damping(2, 2) == Approx(damp * B * L).epsilon(1e-12));
+  const C expected = C(0.0, w) * damp * L * B * std::sin(0.5 * k * B) / (0.5 * k * B);
+  CHECK(std::abs(wr.cs_excitation[2] - expected) < 1e-10 * std::abs(expected));
+  // Sway, roll and yaw carry none of it, and without Cs there is none.
+  for (int d : {1, 3, 5}) CHECK(wr.cs_excitation[d] == C(0.0));
+  auto o0 = Options(U);
+  const auto r0 = sk::SolveObliqueStripTheory(st, m, {w}, {90.0}, o0);
+  CHECK(r0.Wave(0, 0).cs_damping.isZero(0.0));
 }
