@@ -9,8 +9,8 @@
 #include <sstream>
 
 #include "app/commands.h"
-#include "app/output_options.h"
 #include "app/output_dir.h"
+#include "app/output_options.h"
 #include "app/run_checks.h"
 #include "evaluation/adaptive_frequency_grid.h"
 #include "evaluation/hull_plausibility.h"
@@ -18,14 +18,14 @@
 #include "evaluation/strip_attitude.h"
 #include "io/config/design_config.h"
 #include "io/config/hull_config.h"
-#include "io/formats/input_error.h"
 #include "io/config/motion_config.h"
-#include "io/report/rao_comparison.h"
-#include "io/formats/rao_csv_writer.h"
-#include "io/report/rao_plot.h"
 #include "io/config/speed_config.h"
 #include "io/config/water_config.h"
 #include "io/config/yaml_map.h"
+#include "io/formats/input_error.h"
+#include "io/formats/rao_csv_writer.h"
+#include "io/report/rao_comparison.h"
+#include "io/report/rao_plot.h"
 #include "optimizer/rao_peak.h"
 #include "parametric_hull/hydrostatics.h"
 #include "seakeeping/motions/oblique_periodic_solver.h"
@@ -47,12 +47,12 @@ struct HeadingRequest {
 };
 
 // The RAOs of every heading on the strips' own stations, written as rao.csv with a heading column: the
-// time-domain strip method's periodic steady state (sk::SolveObliquePeriodic, the kernel with its lateral rows
-// on full sections) or the oblique-sea strip theory (sk::SolveObliqueStripTheory). Yaw's radius of gyration is
-// taken as pitch's.
-void WriteObliqueRaos(const HeadingRequest& req, const sk::StripKernel& geometry, const eval::DesignCase& design,
-                      const sk::RaoSolverOptions& rao_options, double U, const io::WaterOptions& water,
-                      const std::vector<double>& omega,
+// time-domain strip method's periodic steady state (sk::SolveObliquePeriodic, the kernel with its lateral
+// rows on full sections) or the oblique-sea strip theory (sk::SolveObliqueStripTheory). Yaw's radius of
+// gyration is taken as pitch's.
+void WriteObliqueRaos(const HeadingRequest& req, const sk::StripKernel& geometry,
+                      const eval::DesignCase& design, const sk::RaoSolverOptions& rao_options, double U,
+                      const io::WaterOptions& water, const std::vector<double>& omega,
                       const std::string& hull_name, std::vector<std::string> notes,
                       const std::string& out_dir) {
   const hull::Hydrostatics& hs = design.hydrostatics;
@@ -124,8 +124,7 @@ void WriteObliqueRaos(const HeadingRequest& req, const sk::StripKernel& geometry
   else
     os << "oblique-sea strip theory (STF) at " << req.headings_deg.size()
        << " headings: no Cs damping in heave and pitch, kxx = " << req.kxx_m;
-  os
-     << " m, kzz = kyy, the given frequencies (no adaptive refinement)";
+  os << " m, kzz = kyy, the given frequencies (no adaptive refinement)";
   notes.push_back(os.str());
   notes.push_back(rd.str());
   try {

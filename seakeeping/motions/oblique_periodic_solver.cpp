@@ -13,11 +13,16 @@ using Vector6cd = Eigen::Matrix<cd, 6, 1>;
 // no round-off sway or heave input).
 void HeadingCosSin(double deg, double* c, double* s) {
   const double r = std::remainder(deg, 360.0);
-  if (r == 0.0) *c = 1.0, *s = 0.0;
-  else if (r == 90.0) *c = 0.0, *s = 1.0;
-  else if (r == 180.0 || r == -180.0) *c = -1.0, *s = 0.0;
-  else if (r == -90.0) *c = 0.0, *s = -1.0;
-  else *c = std::cos(r * M_PI / 180.0), *s = std::sin(r * M_PI / 180.0);
+  if (r == 0.0)
+    *c = 1.0, *s = 0.0;
+  else if (r == 90.0)
+    *c = 0.0, *s = 1.0;
+  else if (r == 180.0 || r == -180.0)
+    *c = -1.0, *s = 0.0;
+  else if (r == -90.0)
+    *c = 0.0, *s = -1.0;
+  else
+    *c = std::cos(r * M_PI / 180.0), *s = std::sin(r * M_PI / 180.0);
 }
 
 // ∫_0^1 e^{a t} dt and ∫_0^1 t e^{a t} dt, by their series where the closed forms cancel.
@@ -34,7 +39,8 @@ void ExpMoments(cd a, cd* m0, cd* m1) {
 
 // −∫ e^{kz − i ky y} (n_y, n_z, y n_z − z n_y) dl over the panels (n into the fluid), exact along straight
 // panels: the Froude–Krylov (sway, vertical, roll about y = z = 0) per unit ρ g A of the incident pressure at
-// the section; at k = 0 its vertical entry is the waterline integral ∫ e^{−i ky y} dy (the width B at ky = 0).
+// the section; at k = 0 its vertical entry is the waterline integral ∫ e^{−i ky y} dy (the width B at ky =
+// 0).
 Eigen::Vector3cd PressureIntegrals(const std::vector<Panel>& panels, double k, double ky) {
   Eigen::Vector3cd out = Eigen::Vector3cd::Zero();
   for (const Panel& p : panels) {
@@ -96,10 +102,12 @@ ObliqueStripResult SolveObliquePeriodic(const HeadSeaShipModel& model, const std
                                         const ObliquePeriodicStripForce& strip) {
   std::string err;
   if (!options.IsValid(&err)) throw std::invalid_argument("oblique periodic solver: " + err);
-  if (omega_rad_s.empty()) throw std::invalid_argument("oblique periodic solver: the frequency list is empty");
+  if (omega_rad_s.empty())
+    throw std::invalid_argument("oblique periodic solver: the frequency list is empty");
   for (double w : omega_rad_s)
     if (!(w > 0.0) || !std::isfinite(w))
-      throw std::invalid_argument("oblique periodic solver: omega = " + std::to_string(w) + " rad/s must be > 0");
+      throw std::invalid_argument("oblique periodic solver: omega = " + std::to_string(w) +
+                                  " rad/s must be > 0");
   if (headings_deg.empty()) throw std::invalid_argument("oblique periodic solver: the heading list is empty");
   for (double b : headings_deg)
     if (!std::isfinite(b)) throw std::invalid_argument("oblique periodic solver: a heading is not finite");
@@ -117,8 +125,8 @@ ObliqueStripResult SolveObliquePeriodic(const HeadSeaShipModel& model, const std
       const double we = w - w * w / g * U * c;
       if (!(we > 0.0)) {
         std::ostringstream os;
-        os << "oblique periodic solver: encounter frequency omega_e = " << we << " rad/s <= 0 at omega = " << w
-           << " rad/s, heading " << headings_deg[h] << " deg, speed " << U
+        os << "oblique periodic solver: encounter frequency omega_e = " << we
+           << " rad/s <= 0 at omega = " << w << " rad/s, heading " << headings_deg[h] << " deg, speed " << U
            << " m/s (following and quartering seas with omega_e <= 0 are not solved)";
         throw std::domain_error(os.str());
       }
@@ -236,15 +244,18 @@ ObliqueStripResult SolveObliquePeriodic(const HeadSeaShipModel& model, const std
     }
   }
   for (std::size_t j = 0; j < bad.size(); ++j)
-    if (bad[j]) model.ReportNonFinite("RAO at heading " + std::to_string(headings_deg[j / nf]) + " deg (oblique periodic solution)",
-                                      omega_rad_s[j % nf]);
+    if (bad[j])
+      model.ReportNonFinite(
+          "RAO at heading " + std::to_string(headings_deg[j / nf]) + " deg (oblique periodic solution)",
+          omega_rad_s[j % nf]);
   return out;
 }
 
 ObliqueStripResult SolveObliquePeriodic(const HeadSeaShipModel& model, const std::vector<double>& omega_rad_s,
                                         const std::vector<double>& headings_deg,
                                         const ObliquePeriodicOptions& options) {
-  return SolveObliquePeriodic(model, omega_rad_s, headings_deg, options, KernelObliqueStripForce(model.kernel()));
+  return SolveObliquePeriodic(model, omega_rad_s, headings_deg, options,
+                              KernelObliqueStripForce(model.kernel()));
 }
 
 }  // namespace hullopt::sk

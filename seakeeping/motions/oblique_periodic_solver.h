@@ -2,10 +2,10 @@
 // The time-domain strip method's periodic steady state (periodic_motion_solver.h) at any heading, for sway,
 // heave, roll, pitch and yaw (docs/ship-motions.md, "Oblique seas in the time-domain strip method").
 //
-// Axes, dofs and the heading as oblique_strip_theory.h: x forward, y to port, z up; sway + to port, heave + up,
-// roll + starboard down, pitch + bow down, yaw + bow to port, rotations about the CG; β the direction the waves
-// travel (180° head seas, 90° beam seas from starboard); wave Re[A e^{i(ω_e t − k(x cosβ + y sinβ))}] with x
-// from the CG, ω_e = ω − kU cosβ; motions Re[X e^{iω_e t}].
+// Axes, dofs and the heading as oblique_strip_theory.h: x forward, y to port, z up; sway + to port, heave +
+// up, roll + starboard down, pitch + bow down, yaw + bow to port, rotations about the CG; β the direction the
+// waves travel (180° head seas, 90° beam seas from starboard); wave Re[A e^{i(ω_e t − k(x cosβ + y sinβ))}]
+// with x from the CG, ω_e = ω − kU cosβ; motions Re[X e^{iω_e t}].
 //
 // Every strip is the same strip shifted in time, as in head seas, and its kernel now gives three rows per
 // (n, m): the sway force, the vertical force and the roll moment about y = z = 0 per unit length on the
@@ -58,11 +58,12 @@ struct ObliquePeriodicOptions {
 };
 
 /// Sway, heave, roll, pitch and yaw at every heading [deg, finite] and wave frequency [rad/s, > 0], the
-/// periodic steady state of the strip equations (exact motion derivatives iω_e). The result is laid out as the
-/// oblique strip theory's (waves heading-major; frequencies empty; hydrostatics from the kernel's panels;
+/// periodic steady state of the strip equations (exact motion derivatives iω_e). The result is laid out as
+/// the oblique strip theory's (waves heading-major; frequencies empty; hydrostatics from the kernel's panels;
 /// added_mass and damping with the speed terms and the Cs damping; froude_krylov, diffraction (with the Cs
 /// damping's wave part) and excitation; rao: translations per A, rotations per kA). Throws
-/// std::invalid_argument for bad options, an empty heading list or an empty or non-positive frequency list, and std::domain_error for an encounter frequency <= 0 (following and quartering seas at speed) or a
+/// std::invalid_argument for bad options, an empty heading list or an empty or non-positive frequency list,
+/// and std::domain_error for an encounter frequency <= 0 (following and quartering seas at speed) or a
 /// non-finite RAO (HeadSeaShipModel::ReportNonFinite). Frequencies are solved in parallel (identical results
 /// for any thread count).
 ObliqueStripResult SolveObliquePeriodic(const HeadSeaShipModel& model, const std::vector<double>& omega_rad_s,

@@ -357,7 +357,8 @@ void SolveAtSpeed(const std::vector<ObliqueStripStation>& stations, const std::v
       wr.added_mass = force.real() / (we * we);
       wr.damping = -force.imag() / we;
       wr.viscous_roll_damping = ObliqueViscousRollB44(options, we);
-      SolveWave(ObliqueMotionMatrix(we, out.mass, wr.added_mass, wr.damping, out.restoring, wr.viscous_roll_damping),
+      SolveWave(ObliqueMotionMatrix(we, out.mass, wr.added_mass, wr.damping, out.restoring,
+                                    wr.viscous_roll_damping),
                 k, wr);
     }
 }
@@ -373,8 +374,8 @@ double ObliqueViscousRollB44(const ObliqueStripOptions& options, double we) {
 }
 
 Eigen::PartialPivLU<Eigen::MatrixXcd> ObliqueMotionMatrix(double we, const Matrix6d& mass,
-                                                   const Matrix6d& added_mass, Matrix6d damping,
-                                                   const Matrix6d& restoring, double viscous_b44) {
+                                                          const Matrix6d& added_mass, Matrix6d damping,
+                                                          const Matrix6d& restoring, double viscous_b44) {
   if (viscous_b44 != 0.0) damping(3, 3) += viscous_b44;
   const Eigen::MatrixXcd z =
       (-we * we * (mass + added_mass)).cast<C>() + C(0.0, we) * damping.cast<C>() + restoring.cast<C>();

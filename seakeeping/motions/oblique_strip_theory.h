@@ -162,8 +162,8 @@ struct ObliqueStripResult {
 /// options.speed_m_s: its equivalent linear B44 [N m s]; 0 for model kNone.
 double ObliqueViscousRollB44(const ObliqueStripOptions& options, double we);
 
-/// The 5-dof motion matrix (sway..yaw, the bottom-right 5 × 5 of the 6 × 6 below) at encounter frequency we,
-/// factorised: [−ω_e²(M + A) + iω_e B + C] X = F, with viscous_b44 added to B44.
+/// The 5-dof motion matrix (sway..yaw: the bottom-right 5 × 5 of the 6 × 6 matrices, surge left out) at
+/// encounter frequency we, factorised: [−ω_e²(M + A) + iω_e B + C] X = F, with viscous_b44 added to B44.
 Eigen::PartialPivLU<Eigen::MatrixXcd> ObliqueMotionMatrix(double we, const Matrix6d& mass,
                                                           const Matrix6d& added_mass, Matrix6d damping,
                                                           const Matrix6d& restoring, double viscous_b44);

@@ -61,7 +61,8 @@ FieldSet MakeFieldSet(const std::vector<Panel>& panels, int points_per_panel, bo
 // Memory of the sources on `src` at lag levels s (each to be differenced over an interval):
 // nv(i, j) = (1/2π) ∫_panel ∂H⁽⁻¹⁾/∂n_i ds (real part taken), pl(j) = −(ρ/2π) Σ_q wnz_q ∫_panel Re H⁽⁻¹⁾ ds,
 // pt(j) the same sum with the weights wt (empty when the field set has none).
-// plat: the lateral rows (sway, roll about y = z = 0) of pl with the weights wny, wr4 (2 × ns; 0 × ns without).
+// plat: the lateral rows (sway, roll about y = z = 0) of pl with the weights wny, wr4 (2 × ns, or 0 × ns
+// without them).
 struct Level {
   Eigen::MatrixXd nv;
   Eigen::RowVectorXd pl, pt;
@@ -186,7 +187,8 @@ void ComputeLevelsInto(const FieldSet& f, const SourceEnds& e, const std::vector
         if (lateral) out[l].plat(0, j) += f.wny[p] * v, out[l].plat(1, j) += f.wr4[p] * v;
       }
   }
-  for (int l = 0; l < nl; ++l) out[l].pl *= -rho * kInv2Pi, out[l].pt *= -rho * kInv2Pi, out[l].plat *= -rho * kInv2Pi;
+  for (int l = 0; l < nl; ++l)
+    out[l].pl *= -rho * kInv2Pi, out[l].pt *= -rho * kInv2Pi, out[l].plat *= -rho * kInv2Pi;
 }
 
 std::vector<Level> ComputeLevels(const FieldSet& f, const SourceEnds& e, const std::vector<double>& lags,
@@ -443,8 +445,9 @@ bool StripOperatorOptions::IsValid(std::string* error) const {
                 "pressure form evaluates earlier steps' source potentials on the current contour)");
   if (lateral_rows && (use_mirror_symmetry || sectional_force != SectionalForce::kMomentum ||
                        body_potential != BodyPotential::kSourceSum))
-    return fail("the lateral rows (sway force, roll moment) need full sections (no mirror symmetry), the momentum form "
-                "of the sectional force and the source-sum body potential");
+    return fail(
+        "the lateral rows (sway force, roll moment) need full sections (no mirror symmetry), the momentum "
+        "form of the sectional force and the source-sum body potential");
   return true;
 }
 
@@ -483,12 +486,14 @@ const Eigen::RowVectorXd& StripOperators::MomentumCurrent(int n) const {
 }
 
 const Eigen::MatrixXd& StripOperators::LateralMomentumCurrent(int n) const {
-  if (lateral_current_.empty()) throw std::logic_error("LateralMomentumCurrent: operators built without lateral rows");
+  if (lateral_current_.empty())
+    throw std::logic_error("LateralMomentumCurrent: operators built without lateral rows");
   return lateral_current_[n];
 }
 
 const Eigen::MatrixXd& StripOperators::LateralMomentumMemory(int n, int k) const {
-  if (lateral_current_.empty()) throw std::logic_error("LateralMomentumMemory: operators built without lateral rows");
+  if (lateral_current_.empty())
+    throw std::logic_error("LateralMomentumMemory: operators built without lateral rows");
   return lateral_memory_[n][k];
 }
 

@@ -121,8 +121,8 @@ class StripOperators {
   const Eigen::RowVectorXd& MomentumMemory(int n, int k) const;
   /// True when built with StripOperatorOptions::lateral_rows.
   bool HasLateralRows() const { return !lateral_current_.empty(); }
-  /// Lateral rows only: the rows (sway momentum I_y, roll momentum I_4 about y = z = 0) of the current sources
-  /// and of the sources of step k < n [2 × P; kg/m and kg]. std::logic_error without lateral rows.
+  /// Lateral rows only: the rows (sway momentum I_y, roll momentum I_4 about y = z = 0) of the current
+  /// sources and of the sources of step k < n [2 × P; kg/m and kg]. std::logic_error without lateral rows.
   const Eigen::MatrixXd& LateralMomentumCurrent(int n) const;
   const Eigen::MatrixXd& LateralMomentumMemory(int n, int k) const;
   /// The sectional force form the operators were built for (kMomentum for a fixed section, where both agree).

@@ -1,6 +1,6 @@
 #pragma once
-// A hull's time-domain strip kernel with the lateral rows (sway force, roll moment) and its head-sea model, for
-// the tests of the oblique periodic solver (seakeeping/motions/oblique_periodic_solver.h).
+// A hull's time-domain strip kernel with the lateral rows (sway force, roll moment) and its head-sea model,
+// for the tests of the oblique periodic solver (seakeeping/motions/oblique_periodic_solver.h).
 #include <memory>
 
 #include "parametric_hull/hull_form.h"
@@ -10,16 +10,17 @@
 
 namespace hullopt::test {
 
-/// The kernel on full sections with lateral rows at speed U (stations at the cell faces, the default), and the
-/// head-sea model on it with Cs. The kernel is held by pointer so that the model's reference stays valid.
+/// The kernel on full sections with lateral rows at speed U (stations at the cell faces, the default), and
+/// the head-sea model on it with Cs. The kernel is held by pointer so that the model's reference stays valid.
 struct ObliquePeriodicCase {
   std::unique_ptr<sk::StripKernel> kernel;
   std::unique_ptr<sk::HeadSeaShipModel> model;
 };
 
-inline ObliquePeriodicCase MakeObliquePeriodicCase(const hull::HullForm& hull, const hull::MassProperties& mass,
-                                                   double speed_m_s, int sections, int panels, double cs,
-                                                   double rho = 1000.0, double g = 9.81) {
+inline ObliquePeriodicCase MakeObliquePeriodicCase(const hull::HullForm& hull,
+                                                   const hull::MassProperties& mass, double speed_m_s,
+                                                   int sections, int panels, double cs, double rho = 1000.0,
+                                                   double g = 9.81) {
   sk::RaoSolverOptions o;
   o.sections = sections;
   o.panels = panels;
