@@ -1,6 +1,7 @@
 // hullopt rao CONFIG --out DIR: heave and pitch RAOs of one hull at one speed in head seas → rao.csv,
-// rao.svg; with solver.headings_deg (method strip_theory_stf) sway, heave, roll, pitch and yaw at each
-// heading from the oblique-sea strip theory → rao.csv with a heading column.
+// rao.svg; with solver.headings_deg sway, heave, roll, pitch and yaw at each heading → rao.csv with a heading
+// column, from the time-domain strip method's periodic steady state (the default method) or the oblique-sea
+// strip theory (method strip_theory_stf).
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -8,8 +9,8 @@
 #include <sstream>
 
 #include "app/commands.h"
-#include "app/output_options.h"
 #include "app/output_dir.h"
+#include "app/output_options.h"
 #include "app/run_checks.h"
 #include "evaluation/adaptive_frequency_grid.h"
 #include "evaluation/hull_plausibility.h"
@@ -17,16 +18,17 @@
 #include "evaluation/strip_attitude.h"
 #include "io/config/design_config.h"
 #include "io/config/hull_config.h"
-#include "io/formats/input_error.h"
 #include "io/config/motion_config.h"
-#include "io/report/rao_comparison.h"
-#include "io/formats/rao_csv_writer.h"
-#include "io/report/rao_plot.h"
 #include "io/config/speed_config.h"
 #include "io/config/water_config.h"
 #include "io/config/yaml_map.h"
+#include "io/formats/input_error.h"
+#include "io/formats/rao_csv_writer.h"
+#include "io/report/rao_comparison.h"
+#include "io/report/rao_plot.h"
 #include "optimizer/rao_peak.h"
 #include "parametric_hull/hydrostatics.h"
+#include "seakeeping/motions/oblique_periodic_solver.h"
 #include "seakeeping/motions/oblique_strip_theory.h"
 #include "seakeeping/motions/rao_solver.h"
 #include "seakeeping/motions/validity_range.h"
@@ -44,13 +46,17 @@ struct HeadingRequest {
   double roll_amplitude_deg = 5.0;
 };
 
-// The RAOs of every heading by the oblique-sea strip theory (sk::SolveObliqueStripTheory) on the strips'
-// own stations, written as rao.csv with a heading column. Yaw's radius of gyration is taken as pitch's.
-void WriteObliqueRaos(const HeadingRequest& req, const sk::StripKernel& geometry, const eval::DesignCase& design,
-                      const hull::Hydrostatics& hs, double U, const io::WaterOptions& water,
-                      const std::vector<double>& omega,
+// The RAOs of every heading on the strips' own stations, written as rao.csv with a heading column: the
+// time-domain strip method's periodic steady state (sk::SolveObliquePeriodic, the kernel with its lateral
+// rows on full sections) or the oblique-sea strip theory (sk::SolveObliqueStripTheory). Yaw's radius of
+// gyration is taken as pitch's.
+void WriteObliqueRaos(const HeadingRequest& req, const sk::StripKernel& geometry,
+                      const eval::DesignCase& design, const sk::RaoSolverOptions& rao_options, double U,
+                      const io::WaterOptions& water, const std::vector<double>& omega,
                       const std::string& hull_name, std::vector<std::string> notes,
                       const std::string& out_dir) {
+  const hull::Hydrostatics& hs = design.hydrostatics;
+  const bool time_domain = rao_options.method == sk::RaoSolverOptions::Method::kTimeDomainStrip;
   std::vector<sk::ObliqueStripStation> stations;
   for (int n = 0; n < geometry.Steps(); ++n)
     stations.push_back({geometry.x_m[n], geometry.Weight(n), geometry.panels[n]});
@@ -68,7 +74,22 @@ void WriteObliqueRaos(const HeadingRequest& req, const sk::StripKernel& geometry
   sk::ObliqueStripResult r;
   int roll_flags = 0;
   try {
-    r = sk::SolveObliqueStripTheory(stations, m, omega, req.headings_deg, o);
+    if (time_domain) {
+      const sk::StripKernel kernel =
+          sk::BuildHullStripKernel(design.running_hull, rao_options, U, water.rho_kg_m3, water.g_m_s2,
+                                   sk::TransientGreenLateralKernelBuilder(), &geometry);
+      for (const auto& w : sk::StripKernelWarnings(kernel)) {
+        std::fprintf(stderr, "hullopt: warning: hull '%s': %s\n", hull_name.c_str(), w.c_str());
+        notes.push_back("warning: " + w);
+      }
+      const sk::HeadSeaShipModel model(kernel, design.mass, rao_options.motion);
+      sk::ObliquePeriodicOptions po;
+      po.mass = m;
+      po.roll = o;
+      r = sk::SolveObliquePeriodic(model, omega, req.headings_deg, po);
+    } else {
+      r = sk::SolveObliqueStripTheory(stations, m, omega, req.headings_deg, o);
+    }
   } catch (const std::domain_error& e) {
     throw io::InputError(std::string("cannot compute RAOs: ") + e.what());
   } catch (const std::invalid_argument& e) {
@@ -97,9 +118,13 @@ void WriteObliqueRaos(const HeadingRequest& req, const sk::StripKernel& geometry
     }
   }
   std::ostringstream os;
-  os << "oblique-sea strip theory (STF) at " << req.headings_deg.size()
-     << " headings: no Cs damping in heave and pitch, kxx = " << req.kxx_m
-     << " m, kzz = kyy, the given frequencies (no adaptive refinement)";
+  if (time_domain)
+    os << "time-domain strip method (periodic steady state) at " << req.headings_deg.size()
+       << " headings: Cs = " << rao_options.motion.damping_cs << " in heave and pitch, kxx = " << req.kxx_m;
+  else
+    os << "oblique-sea strip theory (STF) at " << req.headings_deg.size()
+       << " headings: no Cs damping in heave and pitch, kxx = " << req.kxx_m;
+  os << " m, kzz = kyy, the given frequencies (no adaptive refinement)";
   notes.push_back(os.str());
   notes.push_back(rd.str());
   try {
@@ -182,8 +207,7 @@ void RunRao(const std::string& config_file, const std::string& out_dir) {
     notes.push_back(fn.str());
     for (const auto& a : hull.adjustments) notes.push_back("adjusted: " + a);
     for (const auto& w : input_warnings) notes.push_back("warning: " + w);
-    WriteObliqueRaos(headings, geometry, design, hs, U, water, omega, hull_name, notes,
-                     out_dir);
+    WriteObliqueRaos(headings, geometry, design, o, U, water, omega, hull_name, notes, out_dir);
     return;
   }
   sk::RaoTable t;

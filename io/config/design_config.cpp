@@ -66,8 +66,14 @@ ParsedDesign ParseDesign(YamlMap& root, const std::string& config_file, const st
     }
     // Evaluations in seas choose their own frequency grid, so solver.frequencies is optional there.
     s.solver = ParseSolverConfig(sm, o.frequencies_required);
-    if (!p.headings_deg.empty() && s.solver.rao.method != sk::RaoSolverOptions::Method::kStripTheory)
-      sm.Fail("headings_deg", "applies to method: strip_theory_stf only (add solver.method: strip_theory_stf)");
+    // The time-domain strip method in oblique seas needs the kernel's lateral rows: the transient Green
+    // function on full sections, momentum form, source sum, all bodies sharing the strips.
+    if (!p.headings_deg.empty() && s.solver.rao.method == sk::RaoSolverOptions::Method::kTimeDomainStrip &&
+        (p.kernel == "impulsive" || s.solver.sectional_force != sk::SectionalForce::kMomentum ||
+         s.solver.body_potential != sk::BodyPotential::kSourceSum || !s.solver.rao.interaction))
+      sm.Fail("headings_deg",
+              "with the time-domain strip method needs kernel: transient_green, sectional_force: momentum, "
+              "body_potential: source_sum and interaction on (or solver.method: strip_theory_stf)");
     if (!p.headings_deg.empty()) {  // roll needs the centre of gravity's height: no default KG with headings
       const YAML::Node raw = root.raw();
       const YAML::Node mass = raw["mass"];

@@ -324,25 +324,6 @@ void SolveWave(const Eigen::PartialPivLU<Eigen::MatrixXcd>& lu, double k, Obliqu
   for (int d = 1; d < 6; ++d) wr.rao[d] = d >= 3 ? x[d - 1] / k : x[d - 1];
 }
 
-// The viscous roll damping (options.roll_damping) at encounter frequency we: its equivalent linear B44.
-double ViscousRollB44(const ObliqueStripOptions& options, double we) {
-  if (options.roll_damping.model == RollDampingModel::kNone) return 0.0;
-  RollDampingOptions r = options.roll_damping;
-  r.rho_kg_m3 = options.rho_kg_m3;
-  r.g_m_s2 = options.g_m_s2;
-  return ViscousRollDamping(options.roll_damping_hull, we, options.speed_m_s, r).equivalent;
-}
-
-Eigen::PartialPivLU<Eigen::MatrixXcd> MotionMatrix(double we, const Matrix6d& mass,
-                                                   const Matrix6d& added_mass, Matrix6d damping,
-                                                   const Matrix6d& restoring, double viscous_b44) {
-  // The 5-dof equations (sway..yaw): [−ω_e²(M + A) + iω_e B + C] X = F, B with the viscous roll damping.
-  if (viscous_b44 != 0.0) damping(3, 3) += viscous_b44;
-  const Eigen::MatrixXcd z =
-      (-we * we * (mass + added_mass)).cast<C>() + C(0.0, we) * damping.cast<C>() + restoring.cast<C>();
-  return Eigen::PartialPivLU<Eigen::MatrixXcd>(z.bottomRightCorner(5, 5));
-}
-
 // The forward-speed solution (U ≠ 0). Salvesen, Tuck & Faltinsen (1970): the sections are solved at the
 // encounter frequency ω_e = ω − kU cosβ (deep water) and the hydrodynamic force on a section is
 // the 2D force seen through the substantial derivative along the hull, f = (1 − (U/iω_e) ∂/∂x) F_2D, with the
@@ -448,14 +429,15 @@ void SolveAtSpeed(const std::vector<ObliqueStripStation>& stations, const std::v
       }
       wr.added_mass = force.real() / (we * we);
       wr.damping = -force.imag() / we;
-      wr.viscous_roll_damping = ViscousRollB44(options, we);
+      wr.viscous_roll_damping = ObliqueViscousRollB44(options, we);
       if (options.damping_cs > 0.0) {
         AddCsDamping(stations, mass.x_g_m, k, w, beta, options, wr);
-        SolveWave(MotionMatrix(we, out.mass, wr.added_mass, wr.damping + wr.cs_damping,
-                               out.restoring + wr.cs_restoring, wr.viscous_roll_damping),
+        SolveWave(ObliqueMotionMatrix(we, out.mass, wr.added_mass, wr.damping + wr.cs_damping,
+                                      out.restoring + wr.cs_restoring, wr.viscous_roll_damping),
                   k, wr);
       } else {
-        SolveWave(MotionMatrix(we, out.mass, wr.added_mass, wr.damping, out.restoring, wr.viscous_roll_damping),
+        SolveWave(ObliqueMotionMatrix(we, out.mass, wr.added_mass, wr.damping, out.restoring,
+                                      wr.viscous_roll_damping),
                   k, wr);
       }
     }
@@ -463,6 +445,23 @@ void SolveAtSpeed(const std::vector<ObliqueStripStation>& stations, const std::v
 }
 
 }  // namespace
+
+double ObliqueViscousRollB44(const ObliqueStripOptions& options, double we) {
+  if (options.roll_damping.model == RollDampingModel::kNone) return 0.0;
+  RollDampingOptions r = options.roll_damping;
+  r.rho_kg_m3 = options.rho_kg_m3;
+  r.g_m_s2 = options.g_m_s2;
+  return ViscousRollDamping(options.roll_damping_hull, we, options.speed_m_s, r).equivalent;
+}
+
+Eigen::PartialPivLU<Eigen::MatrixXcd> ObliqueMotionMatrix(double we, const Matrix6d& mass,
+                                                          const Matrix6d& added_mass, Matrix6d damping,
+                                                          const Matrix6d& restoring, double viscous_b44) {
+  if (viscous_b44 != 0.0) damping(3, 3) += viscous_b44;
+  const Eigen::MatrixXcd z =
+      (-we * we * (mass + added_mass)).cast<C>() + C(0.0, we) * damping.cast<C>() + restoring.cast<C>();
+  return Eigen::PartialPivLU<Eigen::MatrixXcd>(z.bottomRightCorner(5, 5));
+}
 
 ObliqueStripResult SolveObliqueStripTheory(const std::vector<ObliqueStripStation>& stations,
                                            const ObliqueMassProperties& mass,
@@ -514,8 +513,8 @@ ObliqueStripResult SolveObliqueStripTheory(const std::vector<ObliqueStripStation
     const ObliqueFrequencyResult& fr = out.frequencies[f] =
         FrequencyCoefficients(stations, wet, hydro, f * ns, omegas[f], g, mass.x_g_m, zg);
     const double w = omegas[f], k = fr.k_per_m;
-    const double viscous_b44 = ViscousRollB44(options, w);
-    const auto lu = MotionMatrix(w, out.mass, fr.added_mass, fr.damping, out.restoring, viscous_b44);
+    const double viscous_b44 = ObliqueViscousRollB44(options, w);
+    const auto lu = ObliqueMotionMatrix(w, out.mass, fr.added_mass, fr.damping, out.restoring, viscous_b44);
     for (std::size_t hd = 0; hd < nh; ++hd) {
       ObliqueWaveResult& wr = out.waves[hd * nf + f];
       const double beta = headings_deg[hd] * M_PI / 180.0;

@@ -169,6 +169,16 @@ struct ObliqueStripResult {
   }
 };
 
+/// The viscous roll damping of options.roll_damping (roll_damping.h) at encounter frequency we [rad/s] and
+/// options.speed_m_s: its equivalent linear B44 [N m s]; 0 for model kNone.
+double ObliqueViscousRollB44(const ObliqueStripOptions& options, double we);
+
+/// The 5-dof motion matrix (sway..yaw: the bottom-right 5 × 5 of the 6 × 6 matrices, surge left out) at
+/// encounter frequency we, factorised: [−ω_e²(M + A) + iω_e B + C] X = F, with viscous_b44 added to B44.
+Eigen::PartialPivLU<Eigen::MatrixXcd> ObliqueMotionMatrix(double we, const Matrix6d& mass,
+                                                          const Matrix6d& added_mass, Matrix6d damping,
+                                                          const Matrix6d& restoring, double viscous_b44);
+
 /// The strip-theory solution at every ω (> 0) and heading (degrees, any) at options.speed_m_s. Throws
 /// std::invalid_argument for invalid options or mass, an empty frequency list or no wet station, and
 /// std::domain_error at speed for an encounter frequency <= 0. Stations are passed bow to stern in the speed

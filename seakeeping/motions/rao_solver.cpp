@@ -25,6 +25,18 @@ StripKernelBuilder TransientGreenKernelBuilder(SectionalForce force, BodyPotenti
   };
 }
 
+StripKernelBuilder TransientGreenLateralKernelBuilder() {
+  return [](StripKernel* k) {
+    StripOperatorOptions o;
+    o.layout = k->layout;
+    o.lateral_rows = true;
+    StripKernel built = BuildStripKernel(k->panels, k->x_m, k->dt_s, k->rho_kg_m3, k->g_m_s2, o);
+    k->force = std::move(built.force);
+    k->lateral_force = std::move(built.lateral_force);
+    k->system_condition = std::move(built.system_condition);
+  };
+}
+
 StripGeometryOptions RaoSolverOptions::Geometry() const {
   StripGeometryOptions g;
   g.sections = sections;

@@ -28,6 +28,12 @@ using StripKernelBuilder = std::function<void(StripKernel*)>;
 StripKernelBuilder TransientGreenKernelBuilder(SectionalForce force = SectionalForce::kMomentum,
                                                BodyPotential potential = BodyPotential::kSourceSum);
 
+/// The same kernel on full sections (no mirror halving) with the lateral rows (sway force, roll moment;
+/// StripOperatorOptions::lateral_rows) for the oblique periodic solver (oblique_periodic_solver.h): the
+/// momentum form and the source-sum body potential only. Its vertical rows are those of the full solve, equal
+/// to the mirror-reduced kernel's to round-off.
+StripKernelBuilder TransientGreenLateralKernelBuilder();
+
 struct RaoSolverOptions {
   enum class Path { kPeriodic, kTimeMarching };
   enum class Method { kTimeDomainStrip, kStripTheory };

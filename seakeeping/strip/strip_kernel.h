@@ -83,6 +83,11 @@ struct StripKernel {
   std::vector<double> x_m;                                  ///< [m] station from AP held at step n
   std::vector<std::vector<Panel>> panels;                   ///< panels (all bodies in the strip) at step n
   std::vector<std::vector<Eigen::RowVectorXd>> force;       ///< force[n][m], m = 0..n [N/m per m/s]
+  /// Built with StripOperatorOptions::lateral_rows only (else empty): lateral_force[n][m] (2 × P_m), the
+  /// sway force per unit length (row 0, + to port) [N/m per m/s] and the roll moment per unit length about
+  /// y = z = 0 of the strip (row 1, right-handed about x) [N m/m per m/s] on the section held at step n, for
+  /// the same normal velocities as `force`.
+  std::vector<std::vector<Eigen::MatrixXd>> lateral_force;
   /// Per step: the condition-number estimate of its 2D system (StripOperators::ConditionEstimate); empty when
   /// the builder has none (impulsive stand-in). Large values flag sections the panels cannot resolve.
   std::vector<double> system_condition;

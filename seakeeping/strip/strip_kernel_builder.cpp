@@ -23,6 +23,11 @@ StripKernel BuildStripKernel(const StripOperators& ops, const std::vector<double
   for (int n = 0; n < N; ++n) K.panels[n] = ops.FullPanelsAt(n);
   K.force.resize(N);
   for (int n = 0; n < N; ++n) K.force[n].resize(n + 1);
+  const bool lateral = ops.HasLateralRows();
+  if (lateral) {
+    K.lateral_force.resize(N);
+    for (int n = 0; n < N; ++n) K.lateral_force[n].resize(n + 1);
+  }
   for (int n = 0; n < N; ++n) K.system_condition.push_back(ops.PanelCount(n) > 0 ? ops.ConditionEstimate(n) : 1.0);
   // Column by column (input step m): propagate the source responses forward in n. Columns are independent
   // and each is computed by one thread in a fixed order (bitwise identical for any thread count); the work
@@ -32,7 +37,9 @@ StripKernel BuildStripKernel(const StripOperators& ops, const std::vector<double
     const int Pm = ops.PanelCount(m);
     std::vector<Eigen::MatrixXd> S(N);  // S[n] = ∂σ_n/∂V_m, n >= m
     std::vector<Eigen::RowVectorXd> J(N);
+    std::vector<Eigen::MatrixXd> JL(lateral ? N : 0);  // the lateral momenta (sway, roll), lateral rows only
     const Eigen::RowVectorXd zero = Eigen::RowVectorXd::Zero(Pm);  // the momenta before input step m
+    const Eigen::MatrixXd zero_lateral = Eigen::MatrixXd::Zero(2, Pm);
     for (int n = m; n < N; ++n) {
       const int Pn = ops.PanelCount(n);
       Eigen::MatrixXd rhs = Eigen::MatrixXd::Zero(Pn, Pm);
@@ -49,6 +56,16 @@ StripKernel BuildStripKernel(const StripOperators& ops, const std::vector<double
       auto at = [&](int k) -> const Eigen::RowVectorXd& { return k >= m ? J[k] : zero; };
       const auto c = ops.ForceStencil(n);
       Eigen::RowVectorXd f = (c[0] * J[n] + c[1] * at(n - 1) + c[2] * at(n - 2)) / (2.0 * ops.Dt());
+      if (lateral) {
+        // The same momentum sum and difference for the sway and roll rows.
+        Eigen::MatrixXd jl = Eigen::MatrixXd::Zero(2, Pm);
+        for (int k = m; k < n; ++k)
+          if (ops.PanelCount(k) > 0) jl.noalias() += ops.LateralMomentumMemory(n, k) * S[k];
+        if (Pn > 0) jl.noalias() += ops.LateralMomentumCurrent(n) * S[n];
+        JL[n] = jl;
+        auto lat = [&](int k) -> const Eigen::MatrixXd& { return k >= m ? JL[k] : zero_lateral; };
+        K.lateral_force[n][m] = (c[0] * JL[n] + c[1] * lat(n - 1) + c[2] * lat(n - 2)) / (2.0 * ops.Dt());
+      }
       if (ops.Force() == SectionalForce::kPressure && Pn > 0) {
         // Minus the moving contour's transport term (strip_operators.h); sources before m are zero.
         f.noalias() -= ops.TransportCurrent(n) * S[n];

@@ -30,10 +30,15 @@ struct FieldSet {
   std::vector<double> cy, cz, ny, nz;  // per panel
   std::vector<double> qy, qz, wnz;     // per quadrature point: position and weight · n_z [m]
   std::vector<double> wt;              // per quadrature point [m/s], or empty
+  // Per quadrature point, lateral rows only (StripOperatorOptions::lateral_rows): weight · n_y [m] and
+  // weight · (y n_z − z n_y) [m²] (the roll normal about y = z = 0); empty otherwise.
+  std::vector<double> wny, wr4;
+  bool lateral = false;  // the lateral rows asked for (also for a step without panels: rows of zeros)
 };
 
-FieldSet MakeFieldSet(const std::vector<Panel>& panels, int points_per_panel) {
+FieldSet MakeFieldSet(const std::vector<Panel>& panels, int points_per_panel, bool lateral = false) {
   FieldSet f;
+  f.lateral = lateral;
   const auto& rule = GaussLegendre01(points_per_panel);
   for (const Panel& p : panels) {
     const auto n = p.Normal();
@@ -44,6 +49,10 @@ FieldSet MakeFieldSet(const std::vector<Panel>& panels, int points_per_panel) {
       f.qy.push_back(p.y1 + u * (p.y2 - p.y1));
       f.qz.push_back(p.z1 + u * (p.z2 - p.z1));
       f.wnz.push_back(rule.weights[k] * L * n[1]);
+      if (lateral) {
+        f.wny.push_back(rule.weights[k] * L * n[0]);
+        f.wr4.push_back(rule.weights[k] * L * (f.qy.back() * n[1] - f.qz.back() * n[0]));
+      }
     }
   }
   return f;
@@ -52,9 +61,12 @@ FieldSet MakeFieldSet(const std::vector<Panel>& panels, int points_per_panel) {
 // Memory of the sources on `src` at lag levels s (each to be differenced over an interval):
 // nv(i, j) = (1/2π) ∫_panel ∂H⁽⁻¹⁾/∂n_i ds (real part taken), pl(j) = −(ρ/2π) Σ_q wnz_q ∫_panel Re H⁽⁻¹⁾ ds,
 // pt(j) the same sum with the weights wt (empty when the field set has none).
+// plat: the lateral rows (sway, roll about y = z = 0) of pl with the weights wny, wr4 (2 × ns, or 0 × ns
+// without them).
 struct Level {
   Eigen::MatrixXd nv;
   Eigen::RowVectorXd pl, pt;
+  Eigen::MatrixXd plat;
 };
 
 // The source panels as the kernel sees them: distinct end points (adjacent panels of one contour share
@@ -109,9 +121,10 @@ void ComputeLevelsInto(const FieldSet& f, const SourceEnds& e, const std::vector
   const int nq = static_cast<int>(f.qy.size());
   const int nl = static_cast<int>(lags.size());
   if (nl < 1 || nl > 2) throw std::logic_error("ComputeLevels: one or two lags");
-  const bool transport = !f.wt.empty();
+  const bool transport = !f.wt.empty(), lateral = f.lateral;
   for (int l = 0; l < nl; ++l)
-    out[l].nv.setZero(velocity ? nf : 0, ns), out[l].pl.setZero(ns), out[l].pt.setZero(transport ? ns : 0);
+    out[l].nv.setZero(velocity ? nf : 0, ns), out[l].pl.setZero(ns), out[l].pt.setZero(transport ? ns : 0),
+        out[l].plat.setZero(lateral ? 2 : 0, ns);
   if (ns == 0) return;
   const int ne = static_cast<int>(e.y.size());
   double log_lag[2] = {0.0, 0.0};
@@ -171,9 +184,11 @@ void ComputeLevelsInto(const FieldSet& f, const SourceEnds& e, const std::vector
         const double v = RealOfProduct(e.i_e_minus_ialpha[j], hp[e.second[j] * nl + l] - hp[e.first[j] * nl + l]);
         out[l].pl(j) += f.wnz[p] * v;
         if (transport) out[l].pt(j) += f.wt[p] * v;
+        if (lateral) out[l].plat(0, j) += f.wny[p] * v, out[l].plat(1, j) += f.wr4[p] * v;
       }
   }
-  for (int l = 0; l < nl; ++l) out[l].pl *= -rho * kInv2Pi, out[l].pt *= -rho * kInv2Pi;
+  for (int l = 0; l < nl; ++l)
+    out[l].pl *= -rho * kInv2Pi, out[l].pt *= -rho * kInv2Pi, out[l].plat *= -rho * kInv2Pi;
 }
 
 std::vector<Level> ComputeLevels(const FieldSet& f, const SourceEnds& e, const std::vector<double>& lags,
@@ -192,10 +207,12 @@ Level ComputeLevel(const FieldSet& f, const SourceEnds& e, double s, double g, d
 // where a collocation point is a source panel's midpoint), the Rankine part of the momentum row and, when f
 // has transport weights and `tr` is given, of the transport row.
 void Rankine(const FieldSet& f, const std::vector<Panel>& src, double rho, Eigen::MatrixXd* A,
-             Eigen::RowVectorXd* mom, Eigen::RowVectorXd* tr = nullptr) {
+             Eigen::RowVectorXd* mom, Eigen::RowVectorXd* tr = nullptr, Eigen::MatrixXd* lat = nullptr) {
   const int nf = static_cast<int>(f.cy.size()), ns = static_cast<int>(src.size());
   A->resize(nf, ns);
   mom->setZero(ns);
+  const bool lateral = lat && f.lateral;
+  if (lat) lat->setZero(lateral ? 2 : 0, ns);
   const bool transport = tr && !f.wt.empty();
   if (tr) tr->setZero(transport ? ns : 0);
   for (int j = 0; j < ns; ++j) {
@@ -204,15 +221,17 @@ void Rankine(const FieldSet& f, const std::vector<Panel>& src, double rho, Eigen
       const auto m = ImagePanelInfluence(src[j], f.cy[i], f.cz[i]);
       (*A)(i, j) = f.ny[i] * (r.vy - m.vy) + f.nz[i] * (r.vz - m.vz);
     }
-    double sum = 0, sum_t = 0;
+    double sum = 0, sum_t = 0, sum_y = 0, sum_r = 0;
     for (std::size_t q = 0; q < f.qy.size(); ++q) {
       const double phi = RankinePanelInfluence(src[j], f.qy[q], f.qz[q]).phi -
                          ImagePanelInfluence(src[j], f.qy[q], f.qz[q]).phi;
       sum += f.wnz[q] * phi;
       if (transport) sum_t += f.wt[q] * phi;
+      if (lateral) sum_y += f.wny[q] * phi, sum_r += f.wr4[q] * phi;
     }
     (*mom)(j) = rho * sum;
     if (transport) (*tr)(j) = rho * sum_t;
+    if (lateral) (*lat)(0, j) = rho * sum_y, (*lat)(1, j) = rho * sum_r;
   }
 }
 
@@ -424,6 +443,11 @@ bool StripOperatorOptions::IsValid(std::string* error) const {
   if (body_potential == BodyPotential::kGreenIdentity && sectional_force != SectionalForce::kMomentum)
     return fail("body potential from Green's identity applies to the momentum form of the sectional force only (the "
                 "pressure form evaluates earlier steps' source potentials on the current contour)");
+  if (lateral_rows && (use_mirror_symmetry || sectional_force != SectionalForce::kMomentum ||
+                       body_potential != BodyPotential::kSourceSum))
+    return fail(
+        "the lateral rows (sway force, roll moment) need full sections (no mirror symmetry), the momentum "
+        "form of the sectional force and the source-sum body potential");
   return true;
 }
 
@@ -459,6 +483,18 @@ const Eigen::MatrixXd& StripOperators::Memory(int n, int k) const {
 
 const Eigen::RowVectorXd& StripOperators::MomentumCurrent(int n) const {
   return momentum_current_[invariant_ ? (n == 0 ? 0 : 1) : n];
+}
+
+const Eigen::MatrixXd& StripOperators::LateralMomentumCurrent(int n) const {
+  if (lateral_current_.empty())
+    throw std::logic_error("LateralMomentumCurrent: operators built without lateral rows");
+  return lateral_current_[n];
+}
+
+const Eigen::MatrixXd& StripOperators::LateralMomentumMemory(int n, int k) const {
+  if (lateral_current_.empty())
+    throw std::logic_error("LateralMomentumMemory: operators built without lateral rows");
+  return lateral_memory_[n][k];
 }
 
 const Eigen::RowVectorXd& StripOperators::MomentumMemory(int n, int k) const {
@@ -545,6 +581,8 @@ StripOperators BuildStripOperators(const std::vector<std::vector<Panel>>& panels
   ops.momentum_current_.resize(N);
   ops.memory_.resize(N);
   ops.momentum_memory_.resize(N);
+  const bool lateral = options.lateral_rows;
+  if (lateral) ops.lateral_current_.resize(N), ops.lateral_memory_.resize(N);
   const bool pressure = ops.force_ == SectionalForce::kPressure;
   if (pressure) ops.transport_current_.resize(N), ops.transport_memory_.resize(N), ops.transport_direct_.resize(N);
   std::vector<SourceEnds> ends(N);  // the source panels of each step as the kernel sees them, once
@@ -553,7 +591,7 @@ StripOperators BuildStripOperators(const std::vector<std::vector<Panel>>& panels
   // count.
 #pragma omp parallel for schedule(dynamic, 1)
   for (int n = N - 1; n >= 0; --n) {  // largest work first
-    FieldSet f = MakeFieldSet(ops.panels_[n], options.field_points_per_panel);
+    FieldSet f = MakeFieldSet(ops.panels_[n], options.field_points_per_panel, lateral);
     std::vector<bool> twice(ops.panels_[n].size(), false);
     std::vector<int> full_of(ops.panels_[n].size());
     for (std::size_t r = 0; r < full_of.size(); ++r) full_of[r] = static_cast<int>(r);
@@ -572,7 +610,8 @@ StripOperators BuildStripOperators(const std::vector<std::vector<Panel>>& panels
                        options.field_points_per_panel, rho, &f, &ops.transport_direct_[n]);
     Eigen::MatrixXd A;
     Eigen::RowVectorXd mom, tr;
-    Rankine(f, panels_per_step[n], rho, &A, &mom, pressure ? &tr : nullptr);
+    Eigen::MatrixXd lat;
+    Rankine(f, panels_per_step[n], rho, &A, &mom, pressure ? &tr : nullptr, lateral ? &lat : nullptr);
     if (options.body_potential == BodyPotential::kGreenIdentity && !panels_per_step[n].empty())
       mom = GreenIdentityRankineMomentum(panels_per_step[n], rho);
     if (ops.reduced_) {
@@ -582,6 +621,7 @@ StripOperators BuildStripOperators(const std::vector<std::vector<Panel>>& panels
     ops.memory_[n].resize(n);
     ops.momentum_memory_[n].resize(n);
     if (pressure) ops.transport_memory_[n].resize(n);
+    if (lateral) ops.lateral_memory_[n].resize(n);
     for (int k = 0; k <= n; ++k) {
       // Lags of interval k seen at t_n: [max(0, t_k − dt/2), t_k + dt/2] (k < n), [t_n − dt/2, t_n] (k = n).
       double s1, s2;
@@ -603,12 +643,15 @@ StripOperators BuildStripOperators(const std::vector<std::vector<Panel>>& panels
         A -= b.nv - a.nv;
         mom += b.pl - a.pl;
         if (tr.size() > 0) tr += b.pt - a.pt;
+        if (lateral) lat += b.plat - a.plat;
       } else {
         ops.memory_[n][k] = b.nv - a.nv;
         ops.momentum_memory_[n][k] = b.pl - a.pl;
         if (pressure) ops.transport_memory_[n][k] = b.pt - a.pt;
+        if (lateral) ops.lateral_memory_[n][k] = b.plat - a.plat;
       }
     }
+    if (lateral) ops.lateral_current_[n] = lat;
     if (pressure) ops.transport_current_[n] = tr;
     ops.system_[n] = A;
     if (A.rows() > 0) ops.lu_[n].compute(A);
@@ -624,6 +667,7 @@ StripOperators BuildFixedSectionOperators(const std::vector<Panel>& panels, int 
   CheckPanels(panels, 0);
   if (steps < 1) throw std::invalid_argument("steps must be >= 1, got " + std::to_string(steps));
   if (panels.empty()) throw std::invalid_argument("fixed section has no panels");
+  if (options.lateral_rows) throw std::invalid_argument("fixed-section operators have no lateral rows");
   const int N = steps;
   StripOperators ops;
   ops.steps_ = N, ops.dt_ = dt, ops.rho_ = rho, ops.g_ = g, ops.invariant_ = true;

@@ -74,6 +74,12 @@ struct StripOperatorOptions {
   SectionalForce sectional_force = SectionalForce::kMomentum;
   /// How the current sources' potential enters the momentum (kGreenIdentity needs kMomentum).
   BodyPotential body_potential = BodyPotential::kSourceSum;
+  /// Also the lateral momentum rows of the strip (general operators only): I_y = ρ∫φ n_y dl and the roll
+  /// momentum I_4 = ρ∫φ (y n_z − z n_y) dl about y = z = 0 (LateralMomentumCurrent/Memory), from the same
+  /// sources, for the sway force and roll moment of the antisymmetric modes and oblique waves. Needs full
+  /// sections (use_mirror_symmetry off), kMomentum and kSourceSum. Off: every result bitwise as without it;
+  /// on: the vertical rows are still bitwise the same.
+  bool lateral_rows = false;
   bool IsValid(std::string* error) const;
 };
 
@@ -113,6 +119,12 @@ class StripOperators {
   /// Row vectors of I_n [kg/s per (m/s) of σ = kg/m]: the current sources and the sources of step k < n.
   const Eigen::RowVectorXd& MomentumCurrent(int n) const;
   const Eigen::RowVectorXd& MomentumMemory(int n, int k) const;
+  /// True when built with StripOperatorOptions::lateral_rows.
+  bool HasLateralRows() const { return !lateral_current_.empty(); }
+  /// Lateral rows only: the rows (sway momentum I_y, roll momentum I_4 about y = z = 0) of the current
+  /// sources and of the sources of step k < n [2 × P; kg/m and kg]. std::logic_error without lateral rows.
+  const Eigen::MatrixXd& LateralMomentumCurrent(int n) const;
+  const Eigen::MatrixXd& LateralMomentumMemory(int n, int k) const;
   /// The sectional force form the operators were built for (kMomentum for a fixed section, where both agree).
   SectionalForce Force() const { return force_; }
   /// kPressure only (general operators): the transport term ρT_n of step n (contour_motion.h), by which the
@@ -151,6 +163,9 @@ class StripOperators {
   std::vector<Eigen::RowVectorXd> momentum_current_;
   std::vector<std::vector<Eigen::MatrixXd>> memory_;
   std::vector<std::vector<Eigen::RowVectorXd>> momentum_memory_;
+  // Lateral rows (general operators only): current by n, memory [n][k] for k < n.
+  std::vector<Eigen::MatrixXd> lateral_current_;
+  std::vector<std::vector<Eigen::MatrixXd>> lateral_memory_;
   SectionalForce force_ = SectionalForce::kMomentum;
   // kPressure (general operators): transport rows by n, and [n][k] for k < n.
   std::vector<Eigen::RowVectorXd> transport_current_, transport_direct_;

@@ -494,9 +494,9 @@ solver: { method: strip_theory_stf, sections: 10, panels: 6, headings_deg: [180,
 DESC='`solver.headings_deg` without `mass.kg_m` (roll needs KG)'
 run head_nokg 1 "give mass.kg_m" - -- rao "$T/head_nokg.yaml" --out "$T/o91"
 w head_tds "$HD
-solver: { method: time_domain_strip, sections: 10, panels: 6, headings_deg: [180, 90], frequencies: { lambda_over_L: [1.0, 2.0] } }"
-DESC='`solver.headings_deg` with `method: time_domain_strip`'
-run head_tds 1 "applies to method: strip_theory_stf only" - -- rao "$T/head_tds.yaml" --out "$T/o92"
+solver: { method: time_domain_strip, kernel: impulsive, sections: 10, panels: 6, headings_deg: [180, 90], frequencies: { lambda_over_L: [1.0, 2.0] } }"
+DESC='`solver.headings_deg` with `kernel: impulsive`'
+run head_tds 1 "with the time-domain strip method needs kernel: transient_green" - -- rao "$T/head_tds.yaml" --out "$T/o92"
 # Viscous roll damping (solver.roll_damping, rao with headings): an unknown model, the keys without headings, an
 # amplitude beyond the linearisation, and a hull the model does not cover (flagged in every output).
 w roll_model "$HD
