@@ -90,6 +90,7 @@ ObliquePeriodicStripForce KernelObliqueStripForce(const StripKernel& kernel) {
     const Eigen::VectorXd re = v.real(), im = v.imag();
     const Eigen::MatrixXd& lat = kernel.lateral_force[n][m];
     const Eigen::RowVectorXd& vert = kernel.force[n][m];
+    if (lat.cols() == 0) return Eigen::Vector3cd::Zero();  // a dry step: no panels, no force (and no rows to take)
     return {cd(lat.row(0).dot(re), lat.row(0).dot(im)), cd(vert.dot(re), vert.dot(im)),
             cd(lat.row(1).dot(re), lat.row(1).dot(im))};
   };
