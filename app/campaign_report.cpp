@@ -18,7 +18,6 @@
 namespace hullopt::app {
 namespace {
 
-std::string Fmt(double v, int digits = 4) { return io::FormatNumber(v, digits); }
 
 SingleDesign Evaluate(const std::string& file, const std::string& name, const std::string& command) {
   io::YamlMap root = io::YamlMap::LoadFile(file);
@@ -70,7 +69,7 @@ void WriteCampaignReport(const std::string& out, const std::string& command, con
   const auto& hb = base.design.hydrostatics;
   const auto& hs = best.design.hydrostatics;
   auto row = [](const std::string& q, double a, double b, const std::string& unit) {
-    return std::vector<std::string>{q, Fmt(a), Fmt(b), unit};
+    return std::vector<std::string>{q, io::FormatNumber(a), io::FormatNumber(b), unit};
   };
   r.Table({"quantity", "baseline", "best", "unit"},
           {row("L", hb.L_m, hs.L_m, "m"), row("B", hb.B_m, hs.B_m, "m"), row("T", hb.T_m, hs.T_m, "m"),
@@ -97,8 +96,8 @@ void WriteCampaignReport(const std::string& out, const std::string& command, con
   const auto& ss = best.evaluated.evaluation.seas;
   for (std::size_t i = 0; i < sb.size() && i < ss.size(); ++i) {
     auto add = [&](const sk::PositionResult& a, const sk::PositionResult& b) {
-      rows.push_back({a.position, Fmt(sb[i].sea.Hs_m, 3), Fmt(sb[i].Tz_s, 3), Fmt(a.rms_accel_g), Fmt(b.rms_accel_g),
-                      Fmt(a.msi_pct, 3), Fmt(b.msi_pct, 3)});
+      rows.push_back({a.position, io::FormatNumber(sb[i].sea.Hs_m, 3), io::FormatNumber(sb[i].Tz_s, 3), io::FormatNumber(a.rms_accel_g), io::FormatNumber(b.rms_accel_g),
+                      io::FormatNumber(a.msi_pct, 3), io::FormatNumber(b.msi_pct, 3)});
     };
     for (std::size_t p = 0; p < sb[i].positions.size() && p < ss[i].positions.size(); ++p)
       add(sb[i].positions[p], ss[i].positions[p]);

@@ -27,14 +27,13 @@
 namespace hullopt::app {
 namespace {
 
-std::string Fmt(double v, int digits = 4) { return io::FormatNumber(v, digits); }
 
 void AddReport(const std::string& out, const std::string& config, const YAML::Node& resolved,
                const eval::DesignCase& dc, const io::EvaluatedDesign& d, const std::vector<std::string>& notes,
                const std::vector<std::string>& warnings, const eval::SeakeepingVerdict& verdict) {
   io::HtmlReport r("hullopt design: " + d.name);
-  r.Paragraph("Config " + config + "; hull at " + Fmt(SpeedKnots(dc)) + " kn (U " +
-              Fmt(dc.speed_m_s) + " m/s, Fn " + Fmt(d.parameters.at("Fr"), 3) + "), head seas.");
+  r.Paragraph("Config " + config + "; hull at " + io::FormatNumber(SpeedKnots(dc)) + " kn (U " +
+              io::FormatNumber(dc.speed_m_s) + " m/s, Fn " + io::FormatNumber(d.parameters.at("Fr"), 3) + "), head seas.");
   r.Heading("Warnings");
   r.List(warnings, "No warnings.");
   r.Heading("Defaults taken (config.resolved.yaml holds their values)");
@@ -43,12 +42,12 @@ void AddReport(const std::string& out, const std::string& config, const YAML::No
   const auto& h = dc.hydrostatics;
   r.Heading("Hydrostatics and mass");
   r.Table({"quantity", "value", "unit"},
-          {{"L (waterline)", Fmt(h.L_m), "m"}, {"B", Fmt(h.B_m), "m"}, {"T", Fmt(h.T_m), "m"},
-           {"displacement", Fmt(h.displacement_t), "t"}, {"Cb", Fmt(h.Cb, 3), "-"}, {"Cp", Fmt(h.Cp, 3), "-"},
-           {"Cm", Fmt(h.Cm, 3), "-"}, {"Cwp", Fmt(h.Cwp, 3), "-"}, {"Cvp", Fmt(h.Cvp, 3), "-"},
-           {"LCB", Fmt(h.LCB_pct_L, 3), "% L fwd of midships"}, {"LCF", Fmt(h.LCF_pct_L, 3), "% L fwd of midships"},
-           {"mass", Fmt(dc.mass.mass_kg / 1000.0), "t"}, {"LCG", Fmt(dc.mass.lcg_m_from_ap), "m from AP"},
-           {"k_yy", Fmt(dc.mass.kyy_m), "m"}, {"KG", Fmt(dc.mass.kg_m), "m"}});
+          {{"L (waterline)", io::FormatNumber(h.L_m), "m"}, {"B", io::FormatNumber(h.B_m), "m"}, {"T", io::FormatNumber(h.T_m), "m"},
+           {"displacement", io::FormatNumber(h.displacement_t), "t"}, {"Cb", io::FormatNumber(h.Cb, 3), "-"}, {"Cp", io::FormatNumber(h.Cp, 3), "-"},
+           {"Cm", io::FormatNumber(h.Cm, 3), "-"}, {"Cwp", io::FormatNumber(h.Cwp, 3), "-"}, {"Cvp", io::FormatNumber(h.Cvp, 3), "-"},
+           {"LCB", io::FormatNumber(h.LCB_pct_L, 3), "% L fwd of midships"}, {"LCF", io::FormatNumber(h.LCF_pct_L, 3), "% L fwd of midships"},
+           {"mass", io::FormatNumber(dc.mass.mass_kg / 1000.0), "t"}, {"LCG", io::FormatNumber(dc.mass.lcg_m_from_ap), "m from AP"},
+           {"k_yy", io::FormatNumber(dc.mass.kyy_m), "m"}, {"KG", io::FormatNumber(dc.mass.kg_m), "m"}});
   r.Heading("Body plan");
   r.Svg(io::ReadSvgFile(OutPath(out, "bodyplan.svg")));
   r.Heading("Heave and pitch RAOs");
@@ -57,9 +56,9 @@ void AddReport(const std::string& out, const std::string& config, const YAML::No
   std::vector<std::vector<std::string>> rows;
   for (const auto& s : d.evaluation.seas) {
     auto add = [&](const sk::PositionResult& p) {
-      rows.push_back({p.position, Fmt(s.sea.Hs_m, 3), Fmt(s.Tz_s, 3),
-                      std::isfinite(p.x_from_cg_m) ? Fmt(p.x_from_cg_m) : "", Fmt(p.rms_accel_g),
-                      Fmt(p.rms_accel_g / s.sea.Hs_m), Fmt(p.msi_pct, 3)});
+      rows.push_back({p.position, io::FormatNumber(s.sea.Hs_m, 3), io::FormatNumber(s.Tz_s, 3),
+                      std::isfinite(p.x_from_cg_m) ? io::FormatNumber(p.x_from_cg_m) : "", io::FormatNumber(p.rms_accel_g),
+                      io::FormatNumber(p.rms_accel_g / s.sea.Hs_m), io::FormatNumber(p.msi_pct, 3)});
     };
     for (const auto& p : s.positions) add(p);
     add(s.mean);
@@ -95,8 +94,8 @@ void RunDesign(const std::string& config, const std::string& out) {
   io::WriteHydrostaticsJson(OutPath(out, "hydrostatics.json"), dc.hull, rep);
   const auto& h = dc.hydrostatics;
   std::ostringstream title;
-  title << dc.hull.type << " - L " << Fmt(h.L_m) << " m, B " << Fmt(h.B_m) << " m, T " << Fmt(h.T_m) << " m, "
-        << Fmt(h.displacement_t) << " t";
+  title << dc.hull.type << " - L " << io::FormatNumber(h.L_m) << " m, B " << io::FormatNumber(h.B_m) << " m, T " << io::FormatNumber(h.T_m) << " m, "
+        << io::FormatNumber(h.displacement_t) << " t";
   const bool plots = !NoPlotsGiven();  // --no-plots: the numbers only
   if (plots) io::WriteBodyPlanSvg(OutPath(out, "bodyplan.svg"), dc.hull, title.str());
   std::ostringstream about;
@@ -112,7 +111,7 @@ void RunDesign(const std::string& config, const std::string& out) {
   }
   // A short title: the figure is drawn at full size in report.html only if the title fits its two columns.
   std::ostringstream plot_title;
-  plot_title << "RAOs at U " << Fmt(dc.speed_m_s) << " m/s (Fn " << Fmt(d.parameters.at("Fr"), 3) << "), "
+  plot_title << "RAOs at U " << io::FormatNumber(dc.speed_m_s) << " m/s (Fn " << io::FormatNumber(d.parameters.at("Fr"), 3) << "), "
              << dc.solver.rao.sections << " x " << dc.solver.rao.panels << ", Cs " << dc.solver.cs();
   if (plots)
     io::WriteSvg(io::RaoFigure({d.rao}, {eval::MethodName(dc.solver.rao.method)}, h.L_m, plot_title.str()),

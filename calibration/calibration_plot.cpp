@@ -11,7 +11,7 @@ namespace {
 
 const char* kColours[] = {"#1f77b4", "#d62728", "#2ca02c", "#9467bd", "#ff7f0e", "#8c564b"};
 
-std::string F(double v) {
+std::string PlotNumber(double v) {
   char b[32];
   std::snprintf(b, sizeof b, "%.4g", v);
   return b;
@@ -28,7 +28,7 @@ io::PlotFigure CalibrationPlot(const std::vector<opt::CalibrationCase>& cases, c
 
   io::PlotFigure fig;
   fig.title = "Cs calibration (" + ToString(r.mode) + "): measured vs computed RAOs";
-  fig.footnote = "Head seas, k = ω²/g. Circles: measured. Dashed: Cs_initial = " + F(Cs_initial) +
+  fig.footnote = "Head seas, k = ω²/g. Circles: measured. Dashed: Cs_initial = " + PlotNumber(Cs_initial) +
                  ". Solid: fitted Cs. Computed at the measured points.";
   fig.columns = 2;
   const std::string xlabel = all_l ? "λ/L [-]" : "ω_e [rad/s]";
@@ -55,12 +55,12 @@ io::PlotFigure CalibrationPlot(const std::vector<opt::CalibrationCase>& cases, c
       io::PlotSeries m = io::PlotSeries::Markers(cases[c].label + " measured", x, meas);
       m.hollow_markers = true;
       m.color = colour;
-      io::PlotSeries b = io::PlotSeries::Line(cases[c].label + " Cs " + F(Cs_initial), x, before);
+      io::PlotSeries b = io::PlotSeries::Line(cases[c].label + " Cs " + PlotNumber(Cs_initial), x, before);
       b.dash = "6 4";
       b.color = colour;
       b.line_width_px = 1.2;
       io::PlotSeries a = io::PlotSeries::Line(
-          cases[c].label + " Cs " + F(r.case_Cs[c]) + " ± " + F(r.case_Cs_std_error[c]), x, after);
+          cases[c].label + " Cs " + PlotNumber(r.case_Cs[c]) + " ± " + PlotNumber(r.case_Cs_std_error[c]), x, after);
       a.color = colour;
       panel.series.push_back(m);
       panel.series.push_back(b);

@@ -38,7 +38,7 @@ double Interpolate(const std::vector<double>& x, const std::vector<double>& y, d
   return y[i - 1] + t * (y[i] - y[i - 1]);
 }
 
-std::string Num(double v, int digits = 3) {
+std::string CriterionNumber(double v, int digits = 3) {
   char b[32];
   std::snprintf(b, sizeof b, "%.*g", digits, v);
   return b;
@@ -84,9 +84,9 @@ bool SeakeepingCriterion::IsValid(std::string* error) const {
   if (name.empty())
     e = "criterion: the name is empty";
   else if (!(limit > 0.0) || !std::isfinite(limit))
-    e = "criterion '" + name + "': limit " + Num(limit) + " must be > 0";
+    e = "criterion '" + name + "': limit " + CriterionNumber(limit) + " must be > 0";
   else if (probability && limit > 1.0)
-    e = "criterion '" + name + "': a probability limit " + Num(limit) + " must be <= 1";
+    e = "criterion '" + name + "': a probability limit " + CriterionNumber(limit) + " must be <= 1";
   else if (location.empty())
     e = "criterion '" + name + "': the location is empty";
   else if (station && !ok)
@@ -156,7 +156,7 @@ SeakeepingVerdict JudgeDesign(const sk::RaoTable& rao, const sk::HullExtent& hul
             const double f = geometry.FreeboardAt(x_over_L);
             if (f > 0.0) {
               k.value = sk::DeckWetnessProbability(f, r);
-              k.note = "freeboard " + Num(f) + " m, rms relative motion " + Num(r.rms_m()) + " m";
+              k.note = "freeboard " + CriterionNumber(f) + " m, rms relative motion " + CriterionNumber(r.rms_m()) + " m";
             } else {
               k.value = 1.0;
               k.note = "deck edge at or below the waterline";
@@ -166,8 +166,8 @@ SeakeepingVerdict JudgeDesign(const sk::RaoTable& rao, const sk::HullExtent& hul
             const double vth = sk::OchiThresholdVelocity(geometry.length_m, g);
             if (T > 0.0) {
               k.value = sk::SlammingProbability(T, vth, r);
-              k.note = "draught " + Num(T) + " m, v_th " + Num(vth) + " m/s, rms relative motion " +
-                       Num(r.rms_m()) + " m";
+              k.note = "draught " + CriterionNumber(T) + " m, v_th " + CriterionNumber(vth) + " m/s, rms relative motion " +
+                       CriterionNumber(r.rms_m()) + " m";
             } else {
               k.value = 0.0;
               k.note = "station clear of the water at rest: no bottom slamming by Ochi's criterion";

@@ -13,7 +13,7 @@ namespace {
 
 constexpr double kInf = INFINITY;
 
-std::string Num(double v) {
+std::string EnvelopeNumber(double v) {
   std::ostringstream s;
   s.precision(4);
   s << v;
@@ -86,8 +86,8 @@ std::vector<EnvelopeRule> BuildRules() {
 }
 
 std::string RangeText(double lo, double hi) {
-  if (std::isinf(hi)) return ">= " + Num(lo);
-  return "[" + Num(lo) + ", " + Num(hi) + "]";
+  if (std::isinf(hi)) return ">= " + EnvelopeNumber(lo);
+  return "[" + EnvelopeNumber(lo) + ", " + EnvelopeNumber(hi) + "]";
 }
 
 }  // namespace
@@ -107,7 +107,7 @@ std::vector<EnvelopeFinding> CheckEnvelopeValue(EnvelopeQuantity q, double value
                                                 const std::string& context) {
   const EnvelopeRule& r = EnvelopeRuleOf(q);
   const std::string head =
-      std::string(r.name) + " = " + Num(value) + (context.empty() ? "" : " (" + context + ")");
+      std::string(r.name) + " = " + EnvelopeNumber(value) + (context.empty() ? "" : " (" + context + ")");
   if (!(value >= r.hard_min && value <= r.hard_max))
     return {{q, key, head + " is outside the method's validity envelope " + RangeText(r.hard_min, r.hard_max) +
                          ": " + r.hard_source,
@@ -130,22 +130,22 @@ std::vector<EnvelopeFinding> CheckEnvelope(const EnvelopeInput& in) {
   if (hs) {
     add(CheckEnvelopeValue(Q::kHullLength, hs->L_m, "hull", "the hull's waterline length"));
     add(CheckEnvelopeValue(Q::kDisplacementTonnes, hs->displacement_t, "hull",
-                           "V " + Num(hs->volume_m3) + " m^3"));
+                           "V " + EnvelopeNumber(hs->volume_m3) + " m^3"));
   }
   if (hs && in.hull && hs->L_m > 0.0) {
     const double s = LargestHullSpacing(*in.hull);
     if (s > 0.0)
       add(CheckEnvelopeValue(Q::kHullSpacingOverL, s / hs->L_m, "hull",
-                             "centre spacing " + Num(s) + " m, L " + Num(hs->L_m) + " m"));
+                             "centre spacing " + EnvelopeNumber(s) + " m, L " + EnvelopeNumber(hs->L_m) + " m"));
   }
   const double g = std::isnan(in.g_m_s2) ? 9.81 : in.g_m_s2;
   if (hs && !std::isnan(in.speed_m_s) && hs->L_m > 0.0 && hs->volume_m3 > 0.0 && g > 0.0) {
     const double U = in.speed_m_s;
-    const std::string ctx = "U " + Num(U) + " m/s = " + Num(U / (1852.0 / 3600.0)) + " kn";
-    add(CheckEnvelopeValue(Q::kFroudeNumber, U / std::sqrt(g * hs->L_m), "speed", ctx + ", L " + Num(hs->L_m) + " m"));
+    const std::string ctx = "U " + EnvelopeNumber(U) + " m/s = " + EnvelopeNumber(U / (1852.0 / 3600.0)) + " kn";
+    add(CheckEnvelopeValue(Q::kFroudeNumber, U / std::sqrt(g * hs->L_m), "speed", ctx + ", L " + EnvelopeNumber(hs->L_m) + " m"));
     const double v13 = std::cbrt(hs->volume_m3);
     add(CheckEnvelopeValue(Q::kVolumetricFroude, U / std::sqrt(g * v13), "speed",
-                           ctx + ", V^(1/3) " + Num(v13) + " m"));
+                           ctx + ", V^(1/3) " + EnvelopeNumber(v13) + " m"));
   }
   if (hs && in.mass) {
     const hull::MassProperties& m = *in.mass;
@@ -153,13 +153,13 @@ std::vector<EnvelopeFinding> CheckEnvelope(const EnvelopeInput& in) {
       const double d = m.lcg_m_from_ap - hs->lcb_m_from_ap;
       const double trim = std::atan(std::fabs(d) / hs->bm_l_m) * 180.0 / M_PI;
       add(CheckEnvelopeValue(Q::kStaticTrimDeg, trim, "mass.lcg_m_from_ap",
-                             "LCG " + Num(std::fabs(d)) + " m " + (d >= 0 ? "forward" : "aft") + " of the LCB, BM_L " +
-                                 Num(hs->bm_l_m) + " m"));
+                             "LCG " + EnvelopeNumber(std::fabs(d)) + " m " + (d >= 0 ? "forward" : "aft") + " of the LCB, BM_L " +
+                                 EnvelopeNumber(hs->bm_l_m) + " m"));
     }
     const double depth = in.hull ? HullDepth(*in.hull) : 0.0;
     if (depth > 0.0)
       add(CheckEnvelopeValue(Q::kKgOverDepth, m.kg_m / depth, "mass.kg_m",
-                             "KG " + Num(m.kg_m) + " m, depth of the hull's stations " + Num(depth) + " m"));
+                             "KG " + EnvelopeNumber(m.kg_m) + " m, depth of the hull's stations " + EnvelopeNumber(depth) + " m"));
   }
   std::stable_partition(out.begin(), out.end(), [](const EnvelopeFinding& f) { return f.refuse; });
   return out;
@@ -174,10 +174,10 @@ std::vector<std::string> ResponseEnvelopeWarnings(const sk::DesignEvaluation& ev
   std::vector<std::string> w;
   for (std::size_t i = 0; i < ev.seas.size(); ++i) {
     const sk::SeaEvaluation& s = ev.seas[i];
-    const std::string sea = "sea " + std::to_string(i + 1) + " (Hs " + Num(s.sea.Hs_m) + " m, Tp " + Num(s.Tp_s) + " s)";
+    const std::string sea = "sea " + std::to_string(i + 1) + " (Hs " + EnvelopeNumber(s.sea.Hs_m) + " m, Tp " + EnvelopeNumber(s.Tp_s) + " s)";
     const double lambda_p = g_m_s2 * s.Tp_s * s.Tp_s / (2.0 * M_PI);
     for (const auto& f : CheckEnvelopeValue(EnvelopeQuantity::kWaveSteepness, s.sea.Hs_m / lambda_p, "seas",
-                                            sea + ", lambda_p " + Num(lambda_p) + " m"))
+                                            sea + ", lambda_p " + EnvelopeNumber(lambda_p) + " m"))
       w.push_back(f.message);  // beyond the hard limit the sea was refused as it was read
     double worst = 0.0;
     std::string where;

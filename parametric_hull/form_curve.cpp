@@ -199,7 +199,7 @@ bool Solve(const Maker& make, const Residual& res, const FormCurve* warm, const 
   throw std::domain_error(s.str());
 }
 
-auto Targets(double area, double centroid) {
+auto CurveTargets(double area, double centroid) {
   return [=](const FormCurve& c, Eigen::Vector2d* r) {
     const double a = c.Area();
     (*r)(0) = (a - area) / area;
@@ -227,7 +227,7 @@ FormCurve SolveFormCurveWithPeak(double peak, double end_value, double area, dou
     return true;
   };
   FormCurve c;
-  if (!Solve(make, Targets(area, centroid), warm_start, nullptr, 0.0, &c))
+  if (!Solve(make, CurveTargets(area, centroid), warm_start, nullptr, 0.0, &c))
     Refuse(what, area, centroid, centroid < 0.5 ? "; a wider transom (transom_beam_ratio) moves it aft" : "");
   return c;
 }
@@ -254,7 +254,7 @@ FormCurve SolveFormCurveAtMidship(double end_value, double area, double centroid
   };
   FormCurve c;
   const CurveScore by_peak = [](const FormCurve& f) { return f.peak; };
-  if (!Solve(make, Targets(area, centroid), warm_start, score ? &score : &by_peak, good_enough, &c))
+  if (!Solve(make, CurveTargets(area, centroid), warm_start, score ? &score : &by_peak, good_enough, &c))
     Refuse(what, area, centroid, centroid < 0.5 ? "; a deeper transom (transom_immersion) moves it aft" : "");
   return c;
 }

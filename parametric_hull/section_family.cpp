@@ -10,13 +10,13 @@
 namespace hullopt::hull {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
+constexpr double kSectionPi = 3.14159265358979323846;
 // Reach of the round-bilge family (superellipse exponent 0.35 .. 60): hollower sections than σ = 0.15 are
 // needle-like, fuller than 0.98 are boxes that belong to the hard-chine family.
 constexpr double kRoundBilgeMinSigma = 0.15, kRoundBilgeMaxSigma = 0.98;
 constexpr double kMinLogN = -1.05, kMaxLogN = 4.1;
 // Relative area tolerance of the section solve: round-off level, so hydrostatic targets are met exactly.
-constexpr double kAreaTol = 1e-12;
+constexpr double kSectionAreaTol = 1e-12;
 
 [[noreturn]] void Refuse(const SectionTarget& t, const std::string& family, double sigma,
                          const std::string& rule) {
@@ -56,7 +56,7 @@ Station Superellipse(const SectionTarget& t, double n) {
   s.y_m.resize(m);
   s.z_m.resize(m);
   for (int j = 0; j < m; ++j) {
-    const double th = 0.5 * kPi * j / (m - 1);
+    const double th = 0.5 * kSectionPi * j / (m - 1);
     const double sn = j == m - 1 ? 1.0 : std::sin(th), cs = j == m - 1 ? 0.0 : std::cos(th);
     s.y_m[j] = t.half_beam_m * std::pow(sn, 2.0 / n);
     s.z_m[j] = t.waterline_z_m - t.draught_m * std::pow(cs, 2.0 / n);
@@ -94,7 +94,7 @@ Station RoundBilgeSection(const SectionTarget& t) {
     return SectionArea(Superellipse(t, std::exp(ln)), t.waterline_z_m) / t.area_m2 - 1.0;
   };
   double x0 = 0.5 * (lo + hi), x1 = x0 + 0.01, f0 = f(x0), f1 = f(x1);
-  for (int it = 0; it < 12 && std::fabs(f1) > kAreaTol && f1 != f0; ++it) {
+  for (int it = 0; it < 12 && std::fabs(f1) > kSectionAreaTol && f1 != f0; ++it) {
     const double x2 = x1 - f1 * (x1 - x0) / (f1 - f0);
     if (!(x2 > kMinLogN && x2 < kMaxLogN)) break;
     x0 = x1;
@@ -102,7 +102,7 @@ Station RoundBilgeSection(const SectionTarget& t) {
     x1 = x2;
     f1 = f(x1);
   }
-  if (std::fabs(f1) <= kAreaTol) return Superellipse(t, std::exp(x1));
+  if (std::fabs(f1) <= kSectionAreaTol) return Superellipse(t, std::exp(x1));
   double a = kMinLogN, b = kMaxLogN, fa = f(a), fb = f(b);
   if (fa > 0.0 || fb < 0.0)
     Refuse(t, "round-bilge", sigma, "outside the reach of round-bilge sections with this many points");
@@ -111,7 +111,7 @@ Station RoundBilgeSection(const SectionTarget& t) {
   for (int it = 0; it < 100; ++it) {
     c = (a * fb - b * fa) / (fb - fa);
     const double fc = f(c);
-    if (std::fabs(fc) < kAreaTol) break;
+    if (std::fabs(fc) < kSectionAreaTol) break;
     if (fc < 0.0) {
       a = c;
       fa = fc;
@@ -163,7 +163,7 @@ Station SwathSection(const SectionTarget& t, double e, double h, double nb, doub
   const auto pwl = [&](double v, double ex) { return ellipse_lower && ex == 1.0 ? v : std::pow(v, ex); };
   // Lower half of the bulb: superellipse quadrant from the keel to the widest point.
   for (int j = 0; j < m; ++j) {
-    const double th = 0.5 * kPi * j / (m - 1);
+    const double th = 0.5 * kSectionPi * j / (m - 1);
     const double sn = j == m - 1 ? 1.0 : std::sin(th), cs = j == m - 1 ? 0.0 : std::cos(th);
     s.y_m.push_back(ew * pwl(sn, 2.0 / nb_lower));
     s.z_m.push_back(keel + 0.5 * h * (1.0 - pwl(cs, 2.0 / nb_lower)));
@@ -174,7 +174,7 @@ Station SwathSection(const SectionTarget& t, double e, double h, double nb, doub
     const double wj =
         ellipse ? std::sqrt(1.0 - (st / ew) * (st / ew)) : std::pow(1.0 - std::pow(st / ew, nb), 1.0 / nb);
     for (int j = 1; j < m; ++j) {
-      const double th = 0.5 * kPi * j / (m - 1);
+      const double th = 0.5 * kSectionPi * j / (m - 1);
       // Parametrise by angle for even spacing, clipped at w_j.
       double w = pw(std::sin(th), 2.0 / nb);
       if (w >= wj || j == m - 1) w = wj;

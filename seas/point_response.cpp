@@ -11,7 +11,7 @@
 
 namespace hullopt::sk {
 namespace {
-constexpr double kTwoPi = 6.28318530717958647692;
+constexpr double kTwoPiRad = 6.28318530717958647692;
 }
 
 bool ResponseOptions::IsValid(std::string* error) const {
@@ -58,7 +58,7 @@ SeaResponse::SeaResponse(const RaoTable& rao, const WaveSpectrum& spectrum, cons
     const std::complex<double> x5 = (w * w / g) * r.pitch;  // X5/A = k · X5/(kA)
     const double aa = std::norm(x3), bb = std::real(x3 * std::conj(x5)), cc = std::norm(x5);
     const double we2 = we * we, we4 = we2 * we2;
-    const double wf = Iso2631WfMagnitude(we / kTwoPi);
+    const double wf = Iso2631WfMagnitude(we / kTwoPiRad);
     const double pw[kMoments] = {1.0, we2, we4, we4 * we2, wf * wf * we4};
     for (int k = 0; k < kMoments; ++k) {
       a_[k] += weight * pw[k] * aa;

@@ -8,9 +8,6 @@
 #include "seakeeping/motions/rao_interpolation.h"
 
 namespace hullopt::sk {
-namespace {
-constexpr double kTwoPi = 6.28318530717958647692;
-}
 
 std::complex<double> RelativeMotionTransfer(std::complex<double> heave, std::complex<double> pitch, double w,
                                             double x, double g) {
@@ -21,7 +18,7 @@ std::complex<double> RelativeMotionTransfer(std::complex<double> heave, std::com
 double RelativeMotionMoments::rms_m() const { return std::sqrt(std::max(m0, 0.0)); }
 
 double RelativeMotionMoments::zero_crossings_per_s() const {
-  return m0 > 0.0 ? std::sqrt(std::max(m2, 0.0) / m0) / kTwoPi : 0.0;
+  return m0 > 0.0 ? std::sqrt(std::max(m2, 0.0) / m0) / (2.0 * M_PI) : 0.0;  // [Hz]
 }
 
 RelativeMotionMoments RelativeMotionAt(const RaoTable& rao, const WaveSpectrum& spectrum, double x,

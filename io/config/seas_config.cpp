@@ -25,7 +25,7 @@ std::string WhereMap(const YamlMap& map) {
   throw InputError(WhereMap(map) + ": " + error);
 }
 
-std::string Short(double v) {
+std::string FourDigits(double v) {
   std::ostringstream os;
   os.precision(4);
   os << v;
@@ -40,7 +40,7 @@ constexpr double kStandardGravity = 9.80665;
 std::string SteepnessRefusal(const sk::SeaState& s) {
   const double lambda_p = eval::PeakWaveLength(s, kStandardGravity);
   for (const auto& f : eval::CheckEnvelopeValue(eval::EnvelopeQuantity::kWaveSteepness, s.Hs_m / lambda_p, "Hs_m",
-                                                "Hs " + Short(s.Hs_m) + " m, peak wave length " + Short(lambda_p) + " m"))
+                                                "Hs " + FourDigits(s.Hs_m) + " m, peak wave length " + FourDigits(lambda_p) + " m"))
     if (f.refuse) return f.message;
   return "";
 }

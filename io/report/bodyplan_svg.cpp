@@ -16,12 +16,12 @@ constexpr int kMaxSectionsPerHalf = 11;
 // Layout [px]: a gutter on the left for the waterline and baseline labels (so they never meet a section),
 // the right margin, room above the drawing for the headings and the row of station numbers, and room below
 // for the scale bar.
-constexpr double kWidth = 960, kMaxHeight = 640, kLabelGutter = 130, kRightMargin = 40, kBottomMargin = 60;
+constexpr double kBodyplanWidth = 960, kMaxHeight = 640, kLabelGutter = 130, kRightMargin = 40, kBottomMargin = 60;
 constexpr double kStationFont = 9.5;
 constexpr double kTop = 96;
 constexpr double kCharWidth = 0.6;  // average glyph advance / font size (layout estimate)
 
-std::string Fmt(double v, const char* format = "%.4g") {
+std::string BodyplanNumber(double v, const char* format = "%.4g") {
   char buf[48];
   std::snprintf(buf, sizeof buf, format, v);
   return buf;
@@ -30,7 +30,7 @@ std::string Fmt(double v, const char* format = "%.4g") {
 // Station number on the 0 (AP) to 10 (FP) scale; one decimal unless whole.
 std::string StationNumber(double x_m, double length_m) {
   const double s = length_m > 0.0 ? 10.0 * x_m / length_m : 0.0;
-  return std::abs(s - std::round(s)) < 0.05 ? Fmt(std::round(s), "%.0f") : Fmt(s, "%.1f");
+  return std::abs(s - std::round(s)) < 0.05 ? BodyplanNumber(std::round(s), "%.0f") : BodyplanNumber(s, "%.1f");
 }
 
 // A bar length of 1, 2 or 5 × 10^k metres close to a fifth of the drawing's width.
@@ -61,7 +61,7 @@ void WriteBodyPlanSvg(const std::string& path, const hull::HullForm& hull, const
         zmax = std::max(zmax, s.z_m[k]);
         zmin = std::min(zmin, s.z_m[k]);
       }
-  const double drawing_w = kWidth - kLabelGutter - kRightMargin;
+  const double drawing_w = kBodyplanWidth - kLabelGutter - kRightMargin;
   const double scale = std::min(drawing_w / (2.0 * std::max(ymax, 1e-9)),
                                 (kMaxHeight - kTop - kBottomMargin) / std::max(zmax - zmin, 1e-9));
   const double H = kTop + kBottomMargin + scale * (zmax - zmin) + 10;  // as tall as the drawing needs
@@ -77,19 +77,19 @@ void WriteBodyPlanSvg(const std::string& path, const hull::HullForm& hull, const
                               : hull.bodies[0].stations.back().x_m - hull.bodies[0].stations.front().x_m;
 
   std::ostringstream svg;
-  svg << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << kWidth << "\" height=\"" << H
-      << "\" viewBox=\"0 0 " << kWidth << ' ' << H
+  svg << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << kBodyplanWidth << "\" height=\"" << H
+      << "\" viewBox=\"0 0 " << kBodyplanWidth << ' ' << H
       << "\" font-family=\"sans-serif\">\n<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
   svg << "<text x=\"" << kLabelGutter << "\" y=\"28\" font-size=\"18\">" << title << "</text>\n";
   svg << "<text x=\"" << kLabelGutter
       << "\" y=\"50\" font-size=\"13\" fill=\"#1f4e9c\">aft sections (AP to midships)</text>\n";
-  svg << "<text x=\"" << kWidth - kRightMargin
+  svg << "<text x=\"" << kBodyplanWidth - kRightMargin
       << "\" y=\"50\" font-size=\"13\" text-anchor=\"end\" fill=\"#b02a2a\">forward sections (midships to "
          "FP)</text>\n";
   svg << "<text x=\"" << cx << "\" y=\"50\" font-size=\"11\" text-anchor=\"middle\" fill=\"#555\">station "
          "numbers: 0 = AP, 10 = FP</text>\n";
   // Centreline, baseline, design waterline; their labels in the gutter left of every section.
-  const double line_x0 = kLabelGutter - 12, line_x1 = kWidth - kRightMargin / 2;
+  const double line_x0 = kLabelGutter - 12, line_x1 = kBodyplanWidth - kRightMargin / 2;
   svg << "<line x1=\"" << cx << "\" y1=\"" << kTop - 8 << "\" x2=\"" << cx << "\" y2=\"" << H - kBottomMargin + 10
       << "\" stroke=\"#888\" stroke-dasharray=\"8 4 2 4\"/>\n";
   svg << "<line x1=\"" << line_x0 << "\" y1=\"" << Z(0) << "\" x2=\"" << line_x1 << "\" y2=\"" << Z(0)
@@ -98,7 +98,7 @@ void WriteBodyPlanSvg(const std::string& path, const hull::HullForm& hull, const
   svg << "<line x1=\"" << line_x0 << "\" y1=\"" << Z(hull.draught_m) << "\" x2=\"" << line_x1 << "\" y2=\""
       << Z(hull.draught_m) << "\" stroke=\"#0a8a3a\" stroke-width=\"1.5\"/>\n<text class=\"dwl-label\" x=\""
       << line_x0 - 4 << "\" y=\"" << Z(hull.draught_m) + 4
-      << "\" font-size=\"12\" text-anchor=\"end\" fill=\"#0a8a3a\">DWL T = " << Fmt(hull.draught_m)
+      << "\" font-size=\"12\" text-anchor=\"end\" fill=\"#0a8a3a\">DWL T = " << BodyplanNumber(hull.draught_m)
       << " m</text>\n";
 
   std::vector<StationLabel> labels;
@@ -177,7 +177,7 @@ void WriteBodyPlanSvg(const std::string& path, const hull::HullForm& hull, const
   }
   const double drawing_top = Z(zmax), label_y = drawing_top - 22;
   for (const auto& c : clusters) {
-    double x = std::clamp(c.Start(), double(kLabelGutter), kWidth - kRightMargin - c.width);
+    double x = std::clamp(c.Start(), double(kLabelGutter), kBodyplanWidth - kRightMargin - c.width);
     for (size_t k = c.first; k <= c.last; ++k) {
       const auto& l = labels[k];
       const double w = width(l), centre = x + w / 2;
@@ -190,7 +190,7 @@ void WriteBodyPlanSvg(const std::string& path, const hull::HullForm& hull, const
   }
   // Scale bar under the drawing, right-aligned.
   const double bar_m = ScaleBarMetres(2.0 * ymax);
-  const double bar_px = bar_m * scale, bar_x1 = kWidth - kRightMargin, bar_x0 = bar_x1 - bar_px;
+  const double bar_px = bar_m * scale, bar_x1 = kBodyplanWidth - kRightMargin, bar_x0 = bar_x1 - bar_px;
   const double bar_y = H - 22;
   svg << "<g class=\"scale-bar\"><line x1=\"" << bar_x0 << "\" y1=\"" << bar_y << "\" x2=\"" << bar_x1
       << "\" y2=\"" << bar_y << "\" stroke=\"#222\" stroke-width=\"2\"/>";
@@ -199,7 +199,7 @@ void WriteBodyPlanSvg(const std::string& path, const hull::HullForm& hull, const
         << "\" stroke=\"#222\" stroke-width=\"1.2\"/>";
   svg << "<text x=\"" << bar_x0 << "\" y=\"" << bar_y + 16 << "\" font-size=\"11\" text-anchor=\"middle\">0</text>"
       << "<text x=\"" << bar_x1 << "\" y=\"" << bar_y + 16 << "\" font-size=\"11\" text-anchor=\"middle\">"
-      << Fmt(bar_m) << " m</text></g>\n";
+      << BodyplanNumber(bar_m) << " m</text></g>\n";
   svg << "</svg>\n";
   WriteFileAtomically(path, svg.str());
 }

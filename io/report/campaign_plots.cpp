@@ -9,7 +9,7 @@
 
 namespace hullopt::io {
 namespace {
-std::string Join(const std::string& dir, const std::string& name) { return dir + "/" + name; }
+std::string PlotPath(const std::string& dir, const std::string& name) { return dir + "/" + name; }
 }  // namespace
 
 void WriteOptimizePlots(const std::string& dir, const std::vector<opt::EvaluationRecord>& records,
@@ -48,7 +48,7 @@ void WriteOptimizePlots(const std::string& dir, const std::vector<opt::Evaluatio
   infeasible.marker_size_px = 4;
   p.series.push_back(infeasible);
   p.series.push_back(PlotSeries::Line("best feasible so far", eb, fb));
-  WriteSvg(conv, Join(dir, "convergence.svg"));
+  WriteSvg(conv, PlotPath(dir, "convergence.svg"));
 
   PlotFigure vars;
   vars.title = "Design variables during the optimisation";
@@ -67,7 +67,7 @@ void WriteOptimizePlots(const std::string& dir, const std::vector<opt::Evaluatio
     q.series.push_back(s);
     q.legend = LegendPlace::kNone;
   }
-  WriteSvg(vars, Join(dir, "variables.svg"));
+  WriteSvg(vars, PlotPath(dir, "variables.svg"));
 }
 
 void WriteExplorePlots(const std::string& dir, const std::vector<opt::EvaluationRecord>& records,
@@ -116,7 +116,7 @@ void WriteExplorePlots(const std::string& dir, const std::vector<opt::Evaluation
       p.series.push_back(PlotSeries::Line("partial dependence", bx, by));
     }
   }
-  WriteSvg(fig, Join(dir, "scatter.svg"));
+  WriteSvg(fig, PlotPath(dir, "scatter.svg"));
 }
 
 }  // namespace hullopt::io

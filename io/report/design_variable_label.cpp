@@ -5,7 +5,7 @@
 namespace hullopt::io {
 namespace {
 
-void ReplaceAll(std::string* s, const std::string& from, const std::string& to) {
+void ReplaceEvery(std::string* s, const std::string& from, const std::string& to) {
   for (size_t p = s->find(from); p != std::string::npos; p = s->find(from, p + to.size())) s->replace(p, from.size(), to);
 }
 
@@ -19,8 +19,8 @@ std::string DesignVariableName(const std::string& key) {
     if (name.size() > std::string(suffix).size() && name.compare(name.size() - std::string(suffix).size(),
                                                                  std::string::npos, suffix) == 0)
       name.erase(name.size() - std::string(suffix).size());
-  ReplaceAll(&name, "_over_", "/");
-  ReplaceAll(&name, "_", " ");
+  ReplaceEvery(&name, "_over_", "/");
+  ReplaceEvery(&name, "_", " ");
   return name;
 }
 

@@ -31,7 +31,7 @@ std::string CsvText(const std::string& s) {
   return q + "\"";
 }
 
-std::string Join(const std::string& dir, const std::string& name) {
+std::string ReportPath(const std::string& dir, const std::string& name) {
   return (std::filesystem::path(dir) / name).string();
 }
 
@@ -174,11 +174,11 @@ std::vector<std::string> WriteEvaluationOutputs(const std::string& dir,
                                                 const EvaluationReportOptions& report) {
   if (designs.empty()) throw InputError("evaluate: no designs to report");
   std::vector<std::string> files;
-  WriteMsiCsv(Join(dir, "msi.csv"), designs);
+  WriteMsiCsv(ReportPath(dir, "msi.csv"), designs);
   files.push_back("msi.csv");
   const auto warnings = EvaluationWarnings(designs, report);
   {
-    const std::string path = Join(dir, "summary.json");
+    const std::string path = ReportPath(dir, "summary.json");
     const auto summary = EvaluationSummaryJson(designs, options, warnings);
     RequireFiniteJson(summary, path);
     WriteFileAtomically(path, summary.dump(2) + "\n");
@@ -186,7 +186,7 @@ std::vector<std::string> WriteEvaluationOutputs(const std::string& dir,
   }
   if (!report.plots) return files;
   auto write = [&](const PlotFigure& fig, const std::string& name) {
-    WriteSvg(fig, Join(dir, name));
+    WriteSvg(fig, ReportPath(dir, name));
     files.push_back(name);
   };
   // Fig. 7 at the first design's speed, from the seas it was evaluated in.

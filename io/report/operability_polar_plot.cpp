@@ -13,7 +13,7 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 constexpr double kKnot = 1852.0 / 3600.0;  // [m/s]
-constexpr double kWidth = 900.0, kCx = 450.0, kCy = 330.0, kRadius = 250.0;
+constexpr double kPolarWidth = 900.0, kCx = 450.0, kCy = 330.0, kRadius = 250.0;
 
 std::string F(double v) {
   char b[32];
@@ -115,8 +115,8 @@ std::string RenderOperabilityPolarSvg(const eval::OperabilityPolar& polar, const
   const double height = kCy + kRadius + 110.0 + notes_h;
 
   std::ostringstream svg;
-  svg << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << kWidth << "\" height=\"" << F(height)
-      << "\" viewBox=\"0 0 " << kWidth << " " << F(height) << "\" font-family=\"sans-serif\">\n"
+  svg << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << kPolarWidth << "\" height=\"" << F(height)
+      << "\" viewBox=\"0 0 " << kPolarWidth << " " << F(height) << "\" font-family=\"sans-serif\">\n"
       << "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n"
       << "<defs><pattern id=\"hatch\" width=\"8\" height=\"8\" patternUnits=\"userSpaceOnUse\" "
          "patternTransform=\"rotate(45)\"><rect width=\"8\" height=\"8\" fill=\"#e0e0e0\"/><line x1=\"0\" y1=\"0\" "

@@ -13,14 +13,14 @@
 namespace hullopt::io {
 namespace {
 
-std::string Fmt(double v, const char* format = "%g") {
+std::string PlotNumber(double v, const char* format = "%g") {
   char buf[64];
   std::snprintf(buf, sizeof buf, format, v);
   return buf;
 }
 
 std::string SeaLabel(const sk::SeaEvaluation& s) {
-  return "Hs " + Fmt(s.sea.Hs_m) + " m, Tz " + Fmt(s.Tz_s, "%.3g") + " s";
+  return "Hs " + PlotNumber(s.sea.Hs_m) + " m, Tz " + PlotNumber(s.Tz_s, "%.3g") + " s";
 }
 
 // A design's number: the one its name starts with (the study's "12_TRIa"), else its place in the list. Every
@@ -47,7 +47,7 @@ std::vector<std::string> Groups(const std::vector<EvaluatedDesign>& designs) {
 
 // "forward (x = 10.8 m)": a position with where it is.
 std::string PositionLabel(const sk::PositionResult& p) {
-  return (p.position == "lcg" ? std::string("LCG") : p.position) + " (x = " + Fmt(p.x_from_cg_m, "%.3g") + " m)";
+  return (p.position == "lcg" ? std::string("LCG") : p.position) + " (x = " + PlotNumber(p.x_from_cg_m, "%.3g") + " m)";
 }
 
 std::string GroupTitle(const std::string& group, const std::string& what) {
@@ -71,7 +71,7 @@ size_t ReferenceSeaIndex(const std::vector<sk::SeaEvaluation>& seas) {
 
 PlotFigure EncounterSpectraFigure(const std::vector<sk::WaveSpectrum>& spectra, double U, double g) {
   PlotFigure fig;
-  fig.title = "Head-sea encounter spectra at " + Fmt(U / (1852.0 / 3600.0), "%.3g") + " kn";
+  fig.title = "Head-sea encounter spectra at " + PlotNumber(U / (1852.0 / 3600.0), "%.3g") + " kn";
   fig.panel_width_px = 620.0;
   fig.panel_height_px = 380.0;
   auto& p = fig.AddPanel("", "encounter frequency ω_e [rad/s]", "S_ζ(ω_e) [m²s/rad]");
@@ -82,9 +82,9 @@ PlotFigure EncounterSpectraFigure(const std::vector<sk::WaveSpectrum>& spectra, 
     const auto samples = sk::HeadSeaEncounterSpectrum(s, U, g, 0.0, we_max, 500);
     std::vector<double> x, y;
     for (const auto& e : samples) x.push_back(e.omega_e), y.push_back(e.wave);
-    p.series.push_back(PlotSeries::Line(sk::SpectrumName(s.sea().spectrum) + " Hs " + Fmt(s.Hs_m()) +
-                                            " m, Tz " + Fmt(s.Tz_s(), "%.3g") + " s: peak " +
-                                            Fmt(sk::PeakEncounterFrequency(s, U, g), "%.2f") + " rad/s",
+    p.series.push_back(PlotSeries::Line(sk::SpectrumName(s.sea().spectrum) + " Hs " + PlotNumber(s.Hs_m()) +
+                                            " m, Tz " + PlotNumber(s.Tz_s(), "%.3g") + " s: peak " +
+                                            PlotNumber(sk::PeakEncounterFrequency(s, U, g), "%.2f") + " rad/s",
                                         x, y));
   }
   p.y_include_zero = true;

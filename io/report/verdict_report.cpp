@@ -8,13 +8,13 @@
 namespace hullopt::io {
 namespace {
 
-std::string Fmt(double v, int digits = 3) { return FormatNumber(v, digits); }
+std::string VerdictNumber(double v, int digits = 3) { return FormatNumber(v, digits); }
 
 std::string Value(const eval::SeakeepingCriterion& c, double v) {
   if (c.quantity == eval::CriterionQuantity::kSlammingProbability ||
       c.quantity == eval::CriterionQuantity::kDeckWetnessProbability)
-    return v < 1e-4 ? "< 1e-4" : Fmt(v, 2);
-  return Fmt(v, 3);
+    return v < 1e-4 ? "< 1e-4" : VerdictNumber(v, 2);
+  return VerdictNumber(v, 3);
 }
 
 std::string Margin(double m) {
@@ -32,7 +32,7 @@ std::string EventsText(double per_hour) {
 
 std::string LimitText(const eval::SeakeepingCriterion& c) {
   const std::string u = eval::CriterionQuantityUnit(c.quantity);
-  return Fmt(c.limit, 3) + (u == "-" ? "" : " " + u);
+  return VerdictNumber(c.limit, 3) + (u == "-" ? "" : " " + u);
 }
 
 }  // namespace
@@ -57,13 +57,13 @@ std::string VerdictLine(const std::string& name, const eval::CriteriaSet& set, c
   for (std::size_t c = 0; c < set.criteria.size(); ++c) {
     const double hs = CriterionLimitingHs(v, c);
     if (std::isfinite(hs) && hs < hs_max)
-      fails += (fails.empty() ? "" : ", ") + set.criteria[c].name + (hs > 0 ? " above Hs " + Fmt(hs) + " m" : " from the lowest sea");
+      fails += (fails.empty() ? "" : ", ") + set.criteria[c].name + (hs > 0 ? " above Hs " + VerdictNumber(hs) + " m" : " from the lowest sea");
   }
   std::string line = name + ": ";
   if (fails.empty())
-    line += "meets every criterion of " + set.title + " in every sea (up to Hs " + Fmt(hs_max) + " m)";
+    line += "meets every criterion of " + set.title + " in every sea (up to Hs " + VerdictNumber(hs_max) + " m)";
   else
-    line += (v.limiting_Hs_m > 0 ? "meets every criterion of " + set.title + " up to Hs " + Fmt(v.limiting_Hs_m) + " m"
+    line += (v.limiting_Hs_m > 0 ? "meets every criterion of " + set.title + " up to Hs " + VerdictNumber(v.limiting_Hs_m) + " m"
                                  : "fails a criterion of " + set.title + " in the lowest sea") +
             "; fails " + fails;
   return line;
@@ -100,7 +100,7 @@ void AddVerdictSection(HtmlReport& r, const eval::CriteriaSet& set, const std::v
         row->push_back("all seas");
         cls->push_back("ok");
       } else {
-        row->push_back(hs > 0 ? "Hs " + Fmt(hs) + " m" : "none");
+        row->push_back(hs > 0 ? "Hs " + VerdictNumber(hs) + " m" : "none");
         cls->push_back("fail");
       }
     };
@@ -116,7 +116,7 @@ void AddVerdictSection(HtmlReport& r, const eval::CriteriaSet& set, const std::v
   for (const auto& d : designs) {
     r.Subheading(d.name + ": value and margin per sea");
     std::vector<std::string> h = {"criterion", "limit"};
-    for (const auto& s : d.verdict->seas) h.push_back("Hs " + Fmt(s.Hs_m) + " m, Tz " + Fmt(s.Tz_s) + " s");
+    for (const auto& s : d.verdict->seas) h.push_back("Hs " + VerdictNumber(s.Hs_m) + " m, Tz " + VerdictNumber(s.Tz_s) + " s");
     std::vector<std::vector<std::string>> m, mc;
     for (std::size_t c = 0; c < set.criteria.size(); ++c) {
       const auto& cr = set.criteria[c];
@@ -144,7 +144,7 @@ void AddVerdictSection(HtmlReport& r, const eval::CriteriaSet& set, const std::v
       for (std::size_t c = 0; c < set.criteria.size(); ++c) {
         const auto& k = d.verdict->seas.back().checks[c];
         if (!k.note.empty())
-          notes.push_back(set.criteria[c].name + " (Hs " + Fmt(d.verdict->seas.back().Hs_m) + " m): " + k.note);
+          notes.push_back(set.criteria[c].name + " (Hs " + VerdictNumber(d.verdict->seas.back().Hs_m) + " m): " + k.note);
       }
     if (!notes.empty()) r.List(notes, "");
   }

@@ -5,7 +5,7 @@
 namespace hullopt::sk {
 namespace {
 
-constexpr double kInv2Pi = 0.5 / M_PI;
+constexpr double kRankineInv2Pi = 0.5 / M_PI;
 constexpr double kInv4Pi = 0.25 / M_PI;
 
 // Potential and velocity of a unit-density panel from its local coordinates (u along, w normal to it):
@@ -33,7 +33,7 @@ SourceInfluence Influence(double y1, double z1, double y2, double z2, double y, 
   SourceInfluence out;
   out.phi = kInv4Pi * (u * ln1 - (u - L) * ln2 - 2.0 * L + 2.0 * w * theta);
   const double vu = off_ends ? kInv4Pi * (ln1 - ln2) : 0.0;  // log singular at end points
-  double vw = kInv2Pi * theta;
+  double vw = kRankineInv2Pi * theta;
   if (on_panel) vw += kCurvedPanelSelfFactor * turn_rad * kInv4Pi;  // curvature term (header)
   out.vy = vu * ty + vw * ny;
   out.vz = vu * tz + vw * nz;
