@@ -28,6 +28,7 @@
 //                                            # and .svg: speeds x headings in oblique seas
 //   report: { plots: true }
 #include <chrono>
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -357,7 +358,7 @@ void Run(const std::string& config_file, const std::string& out_dir) {
     designs.push_back(in.design);
   }
 
-  // The operability polar: the oblique-sea strip theory per speed over the headings, on the scatter diagram.
+  // The operability polar: the design's method per speed over the headings, on the scatter diagram.
   std::optional<eval::OperabilityPolar> polar;
   if (operability.polar.present) {
     const DesignInput& in = inputs.front();
@@ -383,7 +384,7 @@ void Run(const std::string& config_file, const std::string& out_dir) {
   // speeds it was raised at when not all.
   std::vector<std::string> polar_flags;
   if (polar) {
-    for (const auto& f : polar->roll_damping_flags) {
+    for (const auto& f : polar->flags) {
       std::string text = "operability polar: " + f.text;
       if (f.speeds_m_s.size() < operability.polar.speeds_kn.size()) {
         text += " (at";
@@ -439,8 +440,9 @@ void Run(const std::string& config_file, const std::string& out_dir) {
                       c.source.c_str());
         notes.push_back(b);
       }
-      notes.push_back("Oblique-sea strip theory (STF), no Cs damping in heave and pitch; running attitude of the "
-                      "design speed at every speed.");
+      std::string method = polar->method;
+      if (!method.empty()) method[0] = static_cast<char>(std::toupper(static_cast<unsigned char>(method[0])));
+      notes.push_back(method + "; running attitude of the design speed at every speed.");
       notes.push_back("Roll damping: " + polar->roll_damping + ".");
       for (const auto& f : polar_flags) notes.push_back("Warning: " + f.substr(std::string("operability polar: ").size()));
       io::WriteOperabilityPolarSvg(OutPath(out_dir, "operability_polar.svg"), *polar,

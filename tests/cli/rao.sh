@@ -54,6 +54,8 @@ check_headings() {
   grep -v '^#' "$1/rao.csv" | tail -n +2 | awk -F, '$1 == 90 && $11 < 0.1 { exit 1 }' || fail "$1: beam seas without roll"
 }
 check_headings "$tmp/headings"
+grep -q "^# the oblique-sea strip theory (STF, Cs = .* in heave and pitch) at 3 headings" "$tmp/headings/rao.csv" ||
+  fail "strip_theory_stf headings rao.csv does not name the method and its Cs"
 grep -q "roll damping: the demihulls' Cs heave damping" "$tmp/headings/rao.csv" ||
   fail "headings rao.csv does not say which roll damping the catamaran has"
 grep -q "^# warning: roll damping: Ikeda's monohull formulae do not cover a demihull pair" "$tmp/headings/rao.csv" ||
@@ -69,7 +71,7 @@ sed 's/solver: { /solver: { headings_deg: [180, 120, 90], /; s/kyy_m: 0.782 }/ky
   "$tmp/td_head.yaml" > "$tmp/td_headings.yaml"
 "$bin" rao "$tmp/td_headings.yaml" --out "$tmp/td_headings" --no-plots --quiet || fail "time-domain headings run refused"
 check_headings "$tmp/td_headings"
-grep -q "^# time-domain strip method (periodic steady state) at 3 headings" "$tmp/td_headings/rao.csv" ||
+grep -q "^# the time-domain strip method (periodic steady state, Cs = .* in heave and pitch) at 3 headings" "$tmp/td_headings/rao.csv" ||
   fail "time-domain headings rao.csv does not name the method"
 paste -d, <(grep -v '^#' "$tmp/td_head/rao.csv" | tail -n +2) \
   <(grep -v '^#' "$tmp/td_headings/rao.csv" | tail -n +2 | awk -F, '$1 == 180') |
