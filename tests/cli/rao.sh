@@ -78,6 +78,16 @@ paste -d, <(grep -v '^#' "$tmp/td_head/rao.csv" | tail -n +2) \
   awk -F, 'function rel(a, b) { d = a - b; if (d < 0) d = -d; return d / (b < 0 ? -b : b) }
            rel($12, $4) > 1e-8 || rel($14, $6) > 1e-8 { print; exit 1 }' ||
   fail "time-domain headings at 180 deg differ from the head-sea run"
+# evaluate reads a headings rao.csv whose rows are all at 180 deg as head seas, and refuses one with other
+# headings at the first such row.
+grep -v '^#' "$tmp/td_headings/rao.csv" | awk -F, 'NR == 1 || $1 == 180' > "$tmp/rao_180.csv"
+printf 'rao_csv: rao_180.csv\nhull_extent: { cg_to_transom_m: 1.41, cg_to_bow_m: 1.59 }\nseas: [ { Hs_m: 0.1, Tz_s: 2.5 } ]\n' \
+  > "$tmp/ev_180.yaml"
+(cd "$tmp" && "$bin" evaluate ev_180.yaml --out ev_180 --quiet --no-plots) || fail "evaluate refused a 180 deg headings rao.csv"
+sed 's#rao_180.csv#td_headings/rao.csv#' "$tmp/ev_180.yaml" > "$tmp/ev_all.yaml"
+(cd "$tmp" && ! "$bin" evaluate ev_all.yaml --out ev_all --quiet 2> ev_all.err) || fail "evaluate read a rao.csv over headings"
+grep -q "wave_direction_deg = 120: a RAO file is read for head seas (180 deg) only" "$tmp/ev_all.err" ||
+  fail "evaluate's refusal of a rao.csv over headings: $(cat "$tmp/ev_all.err")"
 
 expect_error() {  # $1: name, $2: config text, $3: text the message must contain
   echo "$2" > "$tmp/$1.yaml"
