@@ -183,21 +183,21 @@ OperabilityPolar ComputeOperabilityPolar(const DesignCase& design, double kxx_m,
   sk::ObliqueStripOptions strip;
   SetDesignRollDamping(design, options.roll_damping, &strip);
   std::vector<PolarFlag> flags;
-  auto raise = [&](const std::string& f, double U) {
+  auto raise = [&](const std::string& f, double U, bool method) {
     auto it = std::find_if(flags.begin(), flags.end(), [&](const PolarFlag& p) { return p.text == f; });
-    if (it == flags.end()) it = flags.insert(flags.end(), PolarFlag{f, {}});
+    if (it == flags.end()) it = flags.insert(flags.end(), PolarFlag{f, {}, method});
     it->speeds_m_s.push_back(U);
   };
   const ObliqueSolve solve = [&](double U, const std::vector<double>& headings) {
     std::vector<std::string> warnings;
     sk::ObliqueStripResult r = SolveObliqueDesign(design, U, options.omega_rad_s, headings, kxx_m, strip, &warnings);
-    for (const std::string& w : warnings) raise(w, U);
+    for (const std::string& w : warnings) raise(w, U, true);
     // The flags at this speed's roll natural frequency (SolveObliqueDesign puts the design's rho and g in).
     sk::RollDampingOptions roll = strip.roll_damping;
     roll.rho_kg_m3 = design.water.rho_kg_m3;
     roll.g_m_s2 = design.water.g_m_s2;
     for (const std::string& f : sk::RollDampingRangeFlags(strip.roll_damping_hull, RollNaturalFrequency(r), U, roll))
-      raise(f, U);
+      raise(f, U, false);
     return r;
   };
   OperabilityPolar out = ComputeOperabilityPolar(solve, design.water.g_m_s2, design.Extent(), diagram, criteria,

@@ -83,12 +83,15 @@ assert all(r["note"] == "" or "encounter frequency <= 0" in r["note"] for r in r
 PY
 
 # The time-domain strip method (the default): no zero speed (the hull passing through the strips), 4 kn
-# (Fn 0.39) below its Froude range, flagged in every computed cell.
+# (Fn 0.39) below its Froude range, flagged in every computed cell and starred in the plot.
 sed -e 's/method: strip_theory_stf, //' "$TMP/polar.yaml" > "$TMP/td.yaml"
 (cd "$TMP" && "$HULLOPT" evaluate td.yaml --out out_td > /dev/null 2> err_td.txt) \
   || fail "evaluate with the time-domain method failed: $(cat "$TMP/err_td.txt")"
 grep -q "The time-domain strip method (periodic steady state, Cs = 0 in heave and pitch)" \
   "$TMP/out_td/operability_polar.svg" || fail "td: the SVG does not name the method"
+grep -q ">4 kn \*<" "$TMP/out_td/operability_polar.svg" && grep -q "outside the method&#39;s validity range\|outside the method's validity range" \
+  "$TMP/out_td/operability_polar.svg" || fail "td: the SVG does not star the speed below the Froude range"
+! grep -q ">0 kn \*<" "$TMP/out_td/operability_polar.svg" || fail "td: the SVG stars the speed not computed"
 grep -q "operability polar: Fn 0.3[0-9]* is below the validity range of the 2D+t strip method.*(at 4 kn)" \
   "$TMP/err_td.txt" || fail "td: the Froude range flag does not name its speed"
 /usr/bin/python3 - "$TMP/out_td/operability_polar.csv" <<'PY' || fail "td: operability_polar.csv"
