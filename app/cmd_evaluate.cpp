@@ -335,6 +335,14 @@ void Run(const std::string& config_file, const std::string& out_dir) {
         throw io::InputError(blocks.points_where + ": design '" + in.design.name + "': " + error);
     }
   }
+  if (operability.polar.present) {  // the polar's own strip work: a solve per speed over all its headings
+    const DesignInput& in = inputs.front();
+    io::StripWork work = io::StripWorkFromResolved(in.pending_resolved, static_cast<long>(in.omega_rad_s.size()));
+    work.kernels = static_cast<long>(operability.polar.speeds_kn.size());
+    work.count_key = "operability.polar.speeds_kn";
+    work.headings = static_cast<int>(operability.polar.options.headings_deg.size());
+    CheckRunCost("evaluate: operability polar", work);
+  }
   const std::vector<sk::WaveSpectrum> spectra = sk::BuildSpectra(seas);
   ComputePendingRaos(spectra, points, options, &inputs);  // the strip work, once everything has been read and checked
 

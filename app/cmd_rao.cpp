@@ -166,10 +166,9 @@ void RunRao(const std::string& config_file, const std::string& out_dir) {
   const sk::RaoSolverOptions o = eval::RaoOptions(sc, hull_name, sc.cs());
   const auto omega = sk::WaveFrequencies(sc.frequencies, U, water.g_m_s2, hs.L_m);
   CheckOutputDirConfig(out_dir, "rao", root.resolved());
-  CheckRunCost("rao",
-               io::StripWorkFromResolved(
-                   root.resolved(),
-                   static_cast<long>(omega.size() * std::max<std::size_t>(1, headings.headings_deg.size()))));
+  io::StripWork work = io::StripWorkFromResolved(root.resolved(), static_cast<long>(omega.size()));
+  work.headings = static_cast<int>(headings.headings_deg.size());
+  CheckRunCost("rao", work);
   if (oblique) {
     for (const auto& w : input_warnings)
       std::fprintf(stderr, "hullopt: warning: hull '%s': %s\n", hull_name.c_str(), w.c_str());
