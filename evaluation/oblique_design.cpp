@@ -9,6 +9,7 @@
 #include "parametric_hull/hydrostatics.h"
 #include "seakeeping/motions/head_sea_ship_model.h"
 #include "seakeeping/motions/oblique_periodic_solver.h"
+#include "seakeeping/motions/rao_checks.h"
 #include "seakeeping/motions/rao_solver.h"
 #include "seakeeping/motions/validity_range.h"
 
@@ -89,7 +90,10 @@ sk::ObliqueStripResult SolveObliqueDesign(const DesignCase& design, double speed
   if (!SolvedByTimeDomain(design)) {
     const std::vector<sk::ObliqueStripStation> stations =
         sk::ObliqueStripStations(design.running_hull, design.solver.rao.Geometry());
-    return sk::SolveObliqueStripTheory(stations, mass, omega_rad_s, headings_deg, options);
+    sk::ObliqueStripResult r = sk::SolveObliqueStripTheory(stations, mass, omega_rad_s, headings_deg, options);
+    if (warnings)
+      for (auto& w : sk::ObliqueSamplingWarnings(r)) warnings->push_back(std::move(w));
+    return r;
   }
   if (const std::string fault = ObliqueTimeDomainFault(design.solver); !fault.empty())
     throw std::invalid_argument("the time-domain strip method in oblique seas: " + fault +
@@ -108,7 +112,10 @@ sk::ObliqueStripResult SolveObliqueDesign(const DesignCase& design, double speed
   sk::ObliquePeriodicOptions po;
   po.mass = mass;
   po.roll = options;
-  return sk::SolveObliquePeriodic(model, omega_rad_s, headings_deg, po);
+  sk::ObliqueStripResult r = sk::SolveObliquePeriodic(model, omega_rad_s, headings_deg, po);
+  if (warnings)
+    for (auto& w : sk::ObliqueSamplingWarnings(r)) warnings->push_back(std::move(w));
+  return r;
 }
 
 sk::RollDampingHull RollDampingHullOf(const hull::HullForm& hull, const hull::Hydrostatics& hs, double og_m,

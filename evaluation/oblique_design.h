@@ -42,7 +42,8 @@ std::string ObliqueMethodNote(const DesignCase& design);
 /// its lateral rows (sk::SolveObliquePeriodic; at 180 deg heave and pitch are the head-sea path's), or the
 /// oblique-sea strip theory (sk::SolveObliqueStripTheory). `options` gives the roll damping (its rho, g, speed
 /// and Cs are replaced by the design's and speed_m_s). `warnings`, when given, receives the strip kernel's
-/// warnings and, for the time-domain method, its validity range at this speed (sk::ValidityWarnings). Throws
+/// warnings and, for the time-domain method, its validity range at this speed (sk::ValidityWarnings), and the
+/// RAO peaks the frequency grid under-samples at some heading (sk::ObliqueSamplingWarnings). Throws
 /// what the solvers throw (std::domain_error for an encounter frequency <= 0), std::invalid_argument for
 /// kxx_m <= 0, for settings with an ObliqueTimeDomainFault and for the time-domain method at speed <= 0.
 sk::ObliqueStripResult SolveObliqueDesign(const DesignCase& design, double speed_m_s,

@@ -74,8 +74,9 @@ struct PolarCell {
 struct PolarFlag {
   std::string text;
   std::vector<double> speeds_m_s;
-  /// The method's own warning (its validity range, the strip kernel's), which questions the motions themselves
-  /// at those speeds (the plot marks them), rather than the roll damping model's range.
+  /// The method's own warning (its validity range, the strip kernel's, a peak the frequency grid under-samples),
+  /// which questions the motions themselves at those speeds (the plot marks them), rather than the roll damping
+  /// model's range.
   bool method = false;
 };
 

@@ -157,8 +157,8 @@ std::string RenderOperabilityPolarSvg(const eval::OperabilityPolar& polar, const
         << "\" stroke-dasharray=\"3 3\"/>\n";
   svg << "</g>\n<g class=\"labels\" font-size=\"12\" fill=\"#222\">\n";
   // Speed labels down the following-seas axis (where a polar of 90–270° has no cells), on a white ground.
-  // A speed at which the method raised a warning of its own (its validity range) is starred: its cells'
-  // motions are outside the method's assumptions.
+  // A speed at which the method raised a warning of its own (its validity range, an under-sampled peak) is
+  // starred: its cells' motions are in question.
   bool any_starred = false;
   for (std::size_t i = 0; i < speeds.size(); ++i) {
     const double r = R(speeds[i]), t = ScreenAngle(0.0);
@@ -178,7 +178,7 @@ std::string RenderOperabilityPolarSvg(const eval::OperabilityPolar& polar, const
       << "speed (radius)</text>\n";
   if (any_starred)
     svg << "<text x=\"" << F(kCx + 30) << "\" y=\"" << F(kCy + 0.5 * kRadius + 15) << "\" font-size=\"11\" fill=\"#555\">"
-        << "* outside the method's validity range (notes)</text>\n";
+        << "* the motions are flagged at this speed (notes)</text>\n";
   for (double b : {0.0, 45.0, 90.0, 135.0, 180.0, 225.0, 270.0, 315.0}) {
     const double t = ScreenAngle(b), r = kRadius + 22.0;
     std::string text = std::to_string(int(b)) + "°";

@@ -85,4 +85,63 @@ std::vector<std::string> RaoResonanceWarnings(const RaoTable& t, const std::stri
   return out;
 }
 
+std::vector<std::string> ObliqueSamplingWarnings(const ObliqueStripResult& r, const std::string& advice) {
+  std::vector<std::string> out;
+  const std::size_t nh = r.headings_deg.size();
+  if (nh == 0 || r.waves.empty()) return out;
+  const std::size_t nf = r.waves.size() / nh;
+  struct Mode {
+    int dof;
+    const char* name;
+    const char* unit;
+  };
+  for (const Mode& m : {Mode{2, "heave", " m/m"}, Mode{3, "roll", " rad/rad"}, Mode{4, "pitch", " rad/rad"}}) {
+    std::vector<double> headings;
+    RaoPeakFit worst;
+    double worst_heading = 0.0, worst_ratio = 0.0;
+    std::vector<double> omega(nf), omega_worst;
+    std::vector<std::complex<double>> v(nf);
+    // A mode that a heading does not excite (roll and sway in head seas on a symmetric hull: round-off) has no
+    // peak to sample: headings whose largest sample is below 1e-6 of the mode's largest are skipped.
+    double largest = 0.0;
+    for (const ObliqueWaveResult& w : r.waves) largest = std::max(largest, std::abs(w.rao[static_cast<std::size_t>(m.dof)]));
+    for (std::size_t h = 0; h < nh; ++h) {
+      for (std::size_t f = 0; f < nf; ++f) {
+        const ObliqueWaveResult& w = r.Wave(h, f);
+        omega[f] = w.omega_rad_s;
+        v[f] = w.rao[static_cast<std::size_t>(m.dof)];
+      }
+      const RaoPeakFit fit = FitRaoPeak(omega, v);
+      if (!fit.UnderSampled() || !(fit.sampled > 1e-6 * largest)) continue;
+      headings.push_back(r.headings_deg[h]);
+      const double ratio = std::isfinite(fit.fitted) ? fit.fitted / fit.sampled : HUGE_VAL;
+      if (headings.size() == 1 || ratio > worst_ratio) {
+        worst = fit;
+        worst_ratio = ratio;
+        worst_heading = r.headings_deg[h];
+        omega_worst = omega;
+      }
+    }
+    if (headings.empty()) continue;
+    std::ostringstream s;
+    s.precision(3);
+    // No commas: the message goes into CSV notes as it is.
+    s << m.name << " RAO peak is under-sampled by the frequency grid at " << headings.size() << " of " << nh
+      << " headings (";
+    for (std::size_t i = 0; i < headings.size(); ++i) s << (i ? " " : "") << headings[i];
+    s << " deg); the worst at " << worst_heading << " deg: largest sample " << worst.sampled << m.unit
+      << " at omega = " << omega_worst[worst.at] << " rad/s with ";
+    if (worst.single)
+      s << "both neighbours below 1/sqrt(2) of it";
+    else if (std::isfinite(worst.fitted))
+      s << "a single-mode fit peaking at " << worst.fitted << m.unit;
+    else
+      s << "a single-mode fit unbounded near omega = " << worst.omega_fitted << " rad/s";
+    s << "; the peak and what integrates through it depend on the grid: refine the frequencies between "
+      << omega_worst[worst.at - 1] << " and " << omega_worst[worst.at + 1] << " rad/s (" << advice << ")";
+    out.push_back(s.str());
+  }
+  return out;
+}
+
 }  // namespace hullopt::sk

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "seakeeping/motions/oblique_strip_theory.h"
 #include "seakeeping/motions/rao_table.h"
 
 namespace hullopt::sk {
@@ -51,5 +52,16 @@ inline const char* const kGridAdvice = "solver.frequencies, or solver.adaptive_g
 /// The under-sampling warning ends with `advice` (what to change: the config key of the grid).
 std::vector<std::string> RaoResonanceWarnings(const RaoTable& table,
                                               const std::string& advice = kGridAdvice);
+
+/// The advice of ObliqueSamplingWarnings: the oblique path solves the given frequencies.
+inline const char* const kObliqueGridAdvice = "solver.frequencies: the headings have no adaptive refinement";
+
+/// Warnings for the heave, roll and pitch RAO peaks that the wave-frequency grid under-samples at some heading
+/// (the test of RaoResonanceWarnings on each heading's RAOs over the wave frequency, which at every heading of
+/// a result is monotone in the encounter frequency): one per mode, naming the headings and the worst peak. A
+/// heading whose largest sample of the mode is below 1e-6 of the mode's largest at any heading (a mode the
+/// heading does not excite: round-off) is not judged. Empty when none.
+std::vector<std::string> ObliqueSamplingWarnings(const ObliqueStripResult& result,
+                                                 const std::string& advice = kObliqueGridAdvice);
 
 }  // namespace hullopt::sk
