@@ -250,9 +250,13 @@ __attribute__((target("avx"))) int MakeTransientGreenPairsAvx(const double* Y, c
     const __m256d wi =
         _mm256_mul_pd(scale, _mm256_sqrt_pd(_mm256_mul_pd(half, _mm256_max_pd(_mm256_sub_pd(r, p), zero))));
     alignas(32) double a_re[4], a_im[4], w_re[4], w_im[4], arg[4] = {0.0, 0.0, 0.0, 0.0};
+    alignas(32) double log_abs[4] = {0.0, 0.0, 0.0, 0.0};
     _mm256_store_pd(a_re, p), _mm256_store_pd(a_im, _mm256_xor_pd(ya, sign));
     _mm256_store_pd(w_re, wr), _mm256_store_pd(w_im, wi);
     if (with_log) {
+      // ½ ln|w|² (|w|² as std::norm: re·re + im·im).
+      const __m256d norm = _mm256_add_pd(_mm256_mul_pd(wr, wr), _mm256_mul_pd(wi, wi));
+      _mm256_store_pd(log_abs, _mm256_mul_pd(half, PositiveLogarithmAvx(norm)));
       const __m256d u = _mm256_div_pd(ya, r_plus_p);
       const __m256d high = _mm256_cmp_pd(u, tan_3pi16, _CMP_GT_OQ);
       const __m256d mid = _mm256_andnot_pd(high, _mm256_cmp_pd(u, tan_pi16, _CMP_GT_OQ));
@@ -273,7 +277,7 @@ __attribute__((target("avx"))) int MakeTransientGreenPairsAvx(const double* Y, c
       TransientGreenPair& o = out[k + m];
       o.a = cd(a_re[m], a_im[m]);
       o.w = cd(w_re[m], w_im[m]);
-      o.log_w = with_log ? cd(0.5 * std::log(std::norm(o.w)), arg[m]) : cd(0.0);
+      o.log_w = with_log ? cd(log_abs[m], arg[m]) : cd(0.0);
       o.conj = Y[k + m] < 0;
     }
   }

@@ -19,6 +19,7 @@
 #include <cmath>
 #include <complex>
 
+#include "seakeeping/green/positive_logarithm.h"
 #include "seakeeping/green/unit_arctangent.h"
 
 namespace hullopt::sk {
@@ -75,7 +76,7 @@ inline TransientGreenPair MakeTransientGreenPairInFluid(double Y, double Z, doub
   out.a = std::complex<double>(p, -Yabs);
   out.w = std::complex<double>(scale * std::sqrt(0.5 * (r + p)), scale * std::sqrt(0.5 * (r_minus_p > 0.0 ? r_minus_p : 0.0)));
   // ln w: arg w = ½ arg(conj a) in [0, π/4], whose tangent is the half-angle |Y|/(r + |Z|) (no cancellation).
-  if (with_log) out.log_w = std::complex<double>(0.5 * std::log(std::norm(out.w)), UnitArctangent(Yabs / (r + p)));
+  if (with_log) out.log_w = std::complex<double>(0.5 * PositiveLogarithm(std::norm(out.w)), UnitArctangent(Yabs / (r + p)));
   out.conj = Y < 0;
   return out;
 }
