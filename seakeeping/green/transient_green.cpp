@@ -260,11 +260,10 @@ __attribute__((target("avx"))) int MakeTransientGreenPairsAvx(const double* Y, c
       const __m256d u = _mm256_div_pd(ya, r_plus_p);
       const __m256d high = _mm256_cmp_pd(u, tan_3pi16, _CMP_GT_OQ);
       const __m256d mid = _mm256_andnot_pd(high, _mm256_cmp_pd(u, tan_pi16, _CMP_GT_OQ));
-      const __m256d v_high = _mm256_div_pd(_mm256_sub_pd(u, one), _mm256_add_pd(u, one));
-      const __m256d v_mid =
-          _mm256_div_pd(_mm256_sub_pd(u, tan_pi8), _mm256_add_pd(one, _mm256_mul_pd(u, tan_pi8)));
-      const __m256d low = _mm256_andnot_pd(_mm256_or_pd(high, mid), u);
-      const __m256d v = _mm256_or_pd(_mm256_or_pd(_mm256_and_pd(high, v_high), _mm256_and_pd(mid, v_mid)), low);
+      // v = (u − tan c)/(1 + u tan c) with tan c = 1, tan(π/8) or 0 per lane: one division, and the values of
+      // UnitArctangent's three branches (u − 0 = u, 1 + u·0 = 1, u/1 = u, 1 + u·1 = u + 1 exactly).
+      const __m256d tan_c = _mm256_or_pd(_mm256_and_pd(high, one), _mm256_and_pd(mid, tan_pi8));
+      const __m256d v = _mm256_div_pd(_mm256_sub_pd(u, tan_c), _mm256_add_pd(one, _mm256_mul_pd(u, tan_c)));
       const __m256d c = _mm256_or_pd(_mm256_and_pd(high, pi4), _mm256_and_pd(mid, pi8));
       const __m256d s = _mm256_mul_pd(v, v);
       __m256d q = _mm256_set1_pd(-1.0 / 21);
