@@ -28,6 +28,7 @@
 //                                            # and .svg: speeds x headings in oblique seas
 //   report: { plots: true }
 #include <chrono>
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -334,6 +335,14 @@ void Run(const std::string& config_file, const std::string& out_dir) {
         throw io::InputError(blocks.points_where + ": design '" + in.design.name + "': " + error);
     }
   }
+  if (operability.polar.present) {  // the polar's own strip work: a solve per speed over all its headings
+    const DesignInput& in = inputs.front();
+    io::StripWork work = io::StripWorkFromResolved(in.pending_resolved, static_cast<long>(in.omega_rad_s.size()));
+    work.kernels = static_cast<long>(operability.polar.speeds_kn.size());
+    work.count_key = "operability.polar.speeds_kn";
+    work.headings = static_cast<int>(operability.polar.options.headings_deg.size());
+    CheckRunCost("evaluate: operability polar", work);
+  }
   const std::vector<sk::WaveSpectrum> spectra = sk::BuildSpectra(seas);
   ComputePendingRaos(spectra, points, options, &inputs);  // the strip work, once everything has been read and checked
 
@@ -357,7 +366,7 @@ void Run(const std::string& config_file, const std::string& out_dir) {
     designs.push_back(in.design);
   }
 
-  // The operability polar: the oblique-sea strip theory per speed over the headings, on the scatter diagram.
+  // The operability polar: the design's method per speed over the headings, on the scatter diagram.
   std::optional<eval::OperabilityPolar> polar;
   if (operability.polar.present) {
     const DesignInput& in = inputs.front();
@@ -383,7 +392,7 @@ void Run(const std::string& config_file, const std::string& out_dir) {
   // speeds it was raised at when not all.
   std::vector<std::string> polar_flags;
   if (polar) {
-    for (const auto& f : polar->roll_damping_flags) {
+    for (const auto& f : polar->flags) {
       std::string text = "operability polar: " + f.text;
       if (f.speeds_m_s.size() < operability.polar.speeds_kn.size()) {
         text += " (at";
@@ -439,8 +448,9 @@ void Run(const std::string& config_file, const std::string& out_dir) {
                       c.source.c_str());
         notes.push_back(b);
       }
-      notes.push_back("Oblique-sea strip theory (STF), no Cs damping in heave and pitch; running attitude of the "
-                      "design speed at every speed.");
+      std::string method = polar->method;
+      if (!method.empty()) method[0] = static_cast<char>(std::toupper(static_cast<unsigned char>(method[0])));
+      notes.push_back(method + "; running attitude of the design speed at every speed.");
       notes.push_back("Roll damping: " + polar->roll_damping + ".");
       for (const auto& f : polar_flags) notes.push_back("Warning: " + f.substr(std::string("operability polar: ").size()));
       io::WriteOperabilityPolarSvg(OutPath(out_dir, "operability_polar.svg"), *polar,

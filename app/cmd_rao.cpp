@@ -28,7 +28,6 @@
 #include "io/report/rao_plot.h"
 #include "optimizer/rao_peak.h"
 #include "parametric_hull/hydrostatics.h"
-#include "seakeeping/motions/oblique_periodic_solver.h"
 #include "seakeeping/motions/oblique_strip_theory.h"
 #include "seakeeping/motions/rao_solver.h"
 #include "seakeeping/motions/validity_range.h"
@@ -46,25 +45,16 @@ struct HeadingRequest {
   double roll_amplitude_deg = 5.0;
 };
 
-// The RAOs of every heading on the strips' own stations, written as rao.csv with a heading column: the
-// time-domain strip method's periodic steady state (sk::SolveObliquePeriodic, the kernel with its lateral
-// rows on full sections) or the oblique-sea strip theory (sk::SolveObliqueStripTheory). Yaw's radius of
-// gyration is taken as pitch's.
-void WriteObliqueRaos(const HeadingRequest& req, const sk::StripKernel& geometry,
-                      const eval::DesignCase& design, const sk::RaoSolverOptions& rao_options, double U,
+// The RAOs of every heading, written as rao.csv with a heading column, by the design's method
+// (eval::SolveObliqueDesign: the time-domain strip method's periodic steady state on the kernel with its
+// lateral rows, or the oblique-sea strip theory, each with the design's Cs in heave and pitch). Yaw's radius
+// of gyration is taken as pitch's.
+void WriteObliqueRaos(const HeadingRequest& req, const eval::DesignCase& design, double U,
                       const io::WaterOptions& water, const std::vector<double>& omega,
                       const std::string& hull_name, std::vector<std::string> notes,
                       const std::string& out_dir) {
   const hull::Hydrostatics& hs = design.hydrostatics;
-  const bool time_domain = rao_options.method == sk::RaoSolverOptions::Method::kTimeDomainStrip;
-  std::vector<sk::ObliqueStripStation> stations;
-  for (int n = 0; n < geometry.Steps(); ++n)
-    stations.push_back({geometry.x_m[n], geometry.Weight(n), geometry.panels[n]});
-  const sk::ObliqueMassProperties m = eval::ObliqueMassOf(design, req.kxx_m);
   sk::ObliqueStripOptions o;
-  o.rho_kg_m3 = water.rho_kg_m3;
-  o.g_m_s2 = water.g_m_s2;
-  o.speed_m_s = U;
   if (req.roll_damping) {
     sk::RollDampingOptions roll;
     roll.model = sk::RollDampingModel::kIkeda;
@@ -73,27 +63,17 @@ void WriteObliqueRaos(const HeadingRequest& req, const sk::StripKernel& geometry
   }
   sk::ObliqueStripResult r;
   int roll_flags = 0;
+  std::vector<std::string> warnings;
   try {
-    if (time_domain) {
-      const sk::StripKernel kernel =
-          sk::BuildHullStripKernel(design.running_hull, rao_options, U, water.rho_kg_m3, water.g_m_s2,
-                                   sk::TransientGreenLateralKernelBuilder(), &geometry);
-      for (const auto& w : sk::StripKernelWarnings(kernel)) {
-        std::fprintf(stderr, "hullopt: warning: hull '%s': %s\n", hull_name.c_str(), w.c_str());
-        notes.push_back("warning: " + w);
-      }
-      const sk::HeadSeaShipModel model(kernel, design.mass, rao_options.motion);
-      sk::ObliquePeriodicOptions po;
-      po.mass = m;
-      po.roll = o;
-      r = sk::SolveObliquePeriodic(model, omega, req.headings_deg, po);
-    } else {
-      r = sk::SolveObliqueStripTheory(stations, m, omega, req.headings_deg, o);
-    }
+    r = eval::SolveObliqueDesign(design, U, omega, req.headings_deg, req.kxx_m, o, &warnings);
   } catch (const std::domain_error& e) {
     throw io::InputError(std::string("cannot compute RAOs: ") + e.what());
   } catch (const std::invalid_argument& e) {
     throw io::InputError(std::string("cannot compute RAOs: ") + e.what());
+  }
+  for (const auto& w : warnings) {
+    std::fprintf(stderr, "hullopt: warning: hull '%s': %s\n", hull_name.c_str(), w.c_str());
+    notes.push_back("warning: " + w);
   }
   // The viscous roll damping: what was used, its size at the roll resonance, and where the hull lies outside
   // the method's range (a warning in every output).
@@ -118,12 +98,7 @@ void WriteObliqueRaos(const HeadingRequest& req, const sk::StripKernel& geometry
     }
   }
   std::ostringstream os;
-  if (time_domain)
-    os << "time-domain strip method (periodic steady state) at " << req.headings_deg.size()
-       << " headings: Cs = " << rao_options.motion.damping_cs << " in heave and pitch, kxx = " << req.kxx_m;
-  else
-    os << "oblique-sea strip theory (STF) at " << req.headings_deg.size()
-       << " headings: no Cs damping in heave and pitch, kxx = " << req.kxx_m;
+  os << eval::ObliqueMethodNote(design) << " at " << req.headings_deg.size() << " headings, kxx = " << req.kxx_m;
   os << " m, kzz = kyy, the given frequencies (no adaptive refinement)";
   notes.push_back(os.str());
   notes.push_back(rd.str());
@@ -191,10 +166,9 @@ void RunRao(const std::string& config_file, const std::string& out_dir) {
   const sk::RaoSolverOptions o = eval::RaoOptions(sc, hull_name, sc.cs());
   const auto omega = sk::WaveFrequencies(sc.frequencies, U, water.g_m_s2, hs.L_m);
   CheckOutputDirConfig(out_dir, "rao", root.resolved());
-  CheckRunCost("rao",
-               io::StripWorkFromResolved(
-                   root.resolved(),
-                   static_cast<long>(omega.size() * std::max<std::size_t>(1, headings.headings_deg.size()))));
+  io::StripWork work = io::StripWorkFromResolved(root.resolved(), static_cast<long>(omega.size()));
+  work.headings = static_cast<int>(headings.headings_deg.size());
+  CheckRunCost("rao", work);
   if (oblique) {
     for (const auto& w : input_warnings)
       std::fprintf(stderr, "hullopt: warning: hull '%s': %s\n", hull_name.c_str(), w.c_str());
@@ -207,7 +181,7 @@ void RunRao(const std::string& config_file, const std::string& out_dir) {
     notes.push_back(fn.str());
     for (const auto& a : hull.adjustments) notes.push_back("adjusted: " + a);
     for (const auto& w : input_warnings) notes.push_back("warning: " + w);
-    WriteObliqueRaos(headings, geometry, design, o, U, water, omega, hull_name, notes, out_dir);
+    WriteObliqueRaos(headings, design, U, water, omega, hull_name, notes, out_dir);
     return;
   }
   sk::RaoTable t;

@@ -115,6 +115,10 @@ std::string CheckCampaignCost(const std::string& command, const YAML::Node& reso
   if (objective && objective.IsMap() && objective["analytic"]) return "";
   // 60: the sea-evaluation grid when solver.frequencies is absent (app/design_case.h EvaluationFrequencies).
   io::StripWork work = io::StripWorkFromResolved(resolved, 60);
+  // An objective over headings (anything but none or [180]) solves every heading by the oblique path.
+  const YAML::Node headings = objective && objective.IsMap() ? objective["headings_deg"] : YAML::Node();
+  if (headings && headings.IsSequence() && !(headings.size() == 1 && headings[0].as<double>(0.0) == 180.0))
+    work.headings = static_cast<int>(headings.size());
   work.kernels = evaluations;
   work.count_key = count_key;
   work.parallel = parallel;

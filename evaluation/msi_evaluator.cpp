@@ -57,7 +57,7 @@ class MsiEvaluator : public opt::Evaluator, public ResolutionCheckable {
     sk::OperabilityResult op;
     try {  // a non-finite RAO or response is refused where it is computed: this design is not produced
       if (o_.Oblique()) {
-        r.sea_values = ObliqueSeaValues(d);
+        r.sea_values = ObliqueSeaValues(d, &rao.warnings);
       } else {
         rao = DesignRaos(d);
         const opt::CostTimer timer(opt::CostStage::kSeas);
@@ -175,9 +175,13 @@ class MsiEvaluator : public opt::Evaluator, public ResolutionCheckable {
       std::snprintf(b, sizeof b, "%s %g deg (weight %.4g)", h ? "," : "", o_.headings_deg[h], heading_weights_[h]);
       m += b;
     }
-    return m + ", every heading (180 included) by the oblique-sea strip theory (STF: no Cs damping in heave and "
-               "pitch, potential roll damping), so that the headings are compared by one method; weights "
-               "normalised to sum 1";
+    const bool td = basis_.solver.rao.method == sk::RaoSolverOptions::Method::kTimeDomainStrip;
+    return m + ", every heading (180 included) by " +
+           (td ? std::string("the time-domain strip method (periodic steady state on the kernel with its lateral "
+                             "rows; at 180 deg the head-sea path's heave and pitch)")
+               : std::string("the oblique-sea strip theory (STF)")) +
+           " with the design's Cs in heave and pitch and potential roll damping, on the sea frequencies without "
+           "adaptive refinement, so that the headings are compared by one method; weights normalised to sum 1";
   }
   std::vector<std::string> QuantityNames() const override { return kQuantities; }
   std::vector<std::string> VariableNames() const override {
@@ -192,15 +196,20 @@ class MsiEvaluator : public opt::Evaluator, public ResolutionCheckable {
   bool IsThreadSafe() const override { return true; }
 
  private:
-  // The per-sea values Σ_h w_h v_h by the oblique-sea strip theory (MsiObjectiveOptions::headings_deg): v_h
+  // The per-sea values Σ_h w_h v_h by the design's method in oblique seas (MsiObjectiveOptions::headings_deg): v_h
   // the MSI [%] or rms vertical acceleration [g] at `position` (the mean of the three standard positions for
   // -1), all on the hull's centreline at the CG's height, in the long-crested sea travelling at heading h.
-  std::vector<double> ObliqueSeaValues(const DesignCase& d) const {
+  // `warnings` receives what the head-sea path's table would carry: the generator's adjustments, the input's
+  // warnings, the strip kernel's and the method's validity range.
+  std::vector<double> ObliqueSeaValues(const DesignCase& d, std::vector<std::string>* warnings) const {
     const std::vector<double> omega = SeaFrequencies(d);
     sk::ObliqueStripResult result;
+    *warnings = d.hull.adjustments;
+    warnings->insert(warnings->end(), d.input_warnings.begin(), d.input_warnings.end());
     {
       const opt::CostTimer timer(opt::CostStage::kObliqueSolve);
-      result = SolveObliqueDesign(d, d.speed_m_s, omega, o_.headings_deg, DefaultRollRadiusOfGyration(d.hull));
+      result = SolveObliqueDesign(d, d.speed_m_s, omega, o_.headings_deg, DefaultRollRadiusOfGyration(d.hull), {},
+                                  warnings);
     }
     const opt::CostTimer timer(opt::CostStage::kSeas);
     std::vector<ShipPoint> points;

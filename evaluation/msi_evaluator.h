@@ -37,11 +37,12 @@ struct MsiObjectiveOptions {
   /// Wave headings [deg] of measures kMsi and kRmsAccel (180 head seas, 90 beam seas from starboard) and their
   /// weights (>= 0, not all 0, normalised to sum 1; empty: equal weights). The per-sea value is Σ_h w_h v_h.
   /// Empty or {180}: head seas by the design's own solver (the time-domain strip method), bitwise the objective
-  /// without headings. Any other list: every heading, 180 included, by the oblique-sea strip theory (STF, no
-  /// Cs damping in heave and pitch; eval::SolveObliqueDesign on eval::SeaFrequencies, the roll radius of
-  /// gyration eval::DefaultRollRadiusOfGyration, potential roll damping: the vertical motions at the
-  /// centreline positions of a port-starboard symmetric hull do not depend on roll), so that the headings are
-  /// compared by one method. At speed a heading with encounter frequency <= 0 on the grid makes the design not
+  /// without headings. Any other list: every heading, 180 included, by the design's method in oblique seas
+  /// (eval::SolveObliqueDesign: the time-domain strip method's periodic steady state, or the oblique-sea strip
+  /// theory for solver.method strip_theory_stf; the design's Cs in heave and pitch) on eval::SeaFrequencies
+  /// without adaptive refinement, the roll radius of gyration eval::DefaultRollRadiusOfGyration, potential
+  /// roll damping (the vertical motions at the centreline positions of a port-starboard symmetric hull do not
+  /// depend on roll), so that the headings are compared by one method. At speed a heading with encounter frequency <= 0 on the grid makes the design not
   /// produced (the config reader admits only headings in [90, 270] at speed).
   std::vector<double> headings_deg;
   std::vector<double> heading_weights;

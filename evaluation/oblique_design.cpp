@@ -7,6 +7,10 @@
 #include <string>
 
 #include "parametric_hull/hydrostatics.h"
+#include "seakeeping/motions/head_sea_ship_model.h"
+#include "seakeeping/motions/oblique_periodic_solver.h"
+#include "seakeeping/motions/rao_solver.h"
+#include "seakeeping/motions/validity_range.h"
 
 namespace hullopt::eval {
 
@@ -45,17 +49,66 @@ sk::ObliqueMassProperties ObliqueMassOf(const DesignCase& design, double kxx_m) 
   return m;
 }
 
+std::string ObliqueTimeDomainFault(const SolverSettings& solver) {
+  if (solver.sectional_force != sk::SectionalForce::kMomentum) return "the sectional force must be the momentum form";
+  if (solver.body_potential != sk::BodyPotential::kSourceSum) return "the body potential must be the source sum";
+  if (!solver.rao.interaction) return "all bodies must share the strips (interaction on)";
+  return "";
+}
+
+namespace {
+bool SolvedByTimeDomain(const DesignCase& design) {
+  return design.solver.rao.method == sk::RaoSolverOptions::Method::kTimeDomainStrip;
+}
+}  // namespace
+
+std::string ObliqueSpeedFault(const DesignCase& design, double speed_m_s) {
+  if (SolvedByTimeDomain(design) && !(speed_m_s > 0.0))
+    return "the time-domain strip method needs a forward speed > 0 (the hull passing through the strips; "
+           "solver.method: strip_theory_stf solves zero speed)";
+  return "";
+}
+
+std::string ObliqueMethodNote(const DesignCase& design) {
+  std::ostringstream os;
+  os << (SolvedByTimeDomain(design) ? "the time-domain strip method (periodic steady state" : "the oblique-sea strip theory (STF")
+     << ", Cs = " << design.solver.cs() << " in heave and pitch)";
+  return os.str();
+}
+
 sk::ObliqueStripResult SolveObliqueDesign(const DesignCase& design, double speed_m_s,
                                           const std::vector<double>& omega_rad_s,
                                           const std::vector<double>& headings_deg, double kxx_m,
-                                          sk::ObliqueStripOptions options) {
+                                          sk::ObliqueStripOptions options, std::vector<std::string>* warnings) {
   const sk::ObliqueMassProperties mass = ObliqueMassOf(design, kxx_m);
-  options.rho_kg_m3 = design.water.rho_kg_m3;
-  options.g_m_s2 = design.water.g_m_s2;
+  const double rho = design.water.rho_kg_m3, g = design.water.g_m_s2;
+  options.rho_kg_m3 = rho;
+  options.g_m_s2 = g;
   options.speed_m_s = speed_m_s;
-  const std::vector<sk::ObliqueStripStation> stations =
-      sk::ObliqueStripStations(design.running_hull, design.solver.rao.Geometry());
-  return sk::SolveObliqueStripTheory(stations, mass, omega_rad_s, headings_deg, options);
+  options.damping_cs = design.solver.cs();
+  if (!SolvedByTimeDomain(design)) {
+    const std::vector<sk::ObliqueStripStation> stations =
+        sk::ObliqueStripStations(design.running_hull, design.solver.rao.Geometry());
+    return sk::SolveObliqueStripTheory(stations, mass, omega_rad_s, headings_deg, options);
+  }
+  if (const std::string fault = ObliqueTimeDomainFault(design.solver); !fault.empty())
+    throw std::invalid_argument("the time-domain strip method in oblique seas: " + fault +
+                                " (or solver.method: strip_theory_stf)");
+  if (const std::string fault = ObliqueSpeedFault(design, speed_m_s); !fault.empty())
+    throw std::invalid_argument(fault);
+  const sk::RaoSolverOptions rao = RaoOptions(design.solver, design.name, design.solver.cs());
+  const sk::StripKernel kernel = sk::BuildHullStripKernel(design.running_hull, rao, speed_m_s, rho, g,
+                                                          sk::TransientGreenLateralKernelBuilder());
+  if (warnings) {
+    for (auto& w : sk::StripKernelWarnings(kernel)) warnings->push_back(std::move(w));
+    for (auto& w : sk::ValidityWarnings(speed_m_s, design.hydrostatics.L_m, g, omega_rad_s))
+      warnings->push_back(std::move(w));
+  }
+  const sk::HeadSeaShipModel model(kernel, design.mass, rao.motion);
+  sk::ObliquePeriodicOptions po;
+  po.mass = mass;
+  po.roll = options;
+  return sk::SolveObliquePeriodic(model, omega_rad_s, headings_deg, po);
 }
 
 sk::RollDampingHull RollDampingHullOf(const hull::HullForm& hull, const hull::Hydrostatics& hs, double og_m,

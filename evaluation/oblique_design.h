@@ -24,15 +24,32 @@ double DefaultRollRadiusOfGyration(const hull::HullForm& hull);
 /// running draught, I44 = m kxx², I55 = m kyy², I66 = m kyy² (yaw's radius of gyration taken as pitch's).
 sk::ObliqueMassProperties ObliqueMassOf(const DesignCase& design, double kxx_m);
 
+/// The fault that keeps a design's solver settings off the time-domain strip method in oblique seas (the
+/// kernel's lateral rows need the momentum form, the source sum and all bodies sharing the strips), or "".
+std::string ObliqueTimeDomainFault(const SolverSettings& solver);
+
+/// Why SolveObliqueDesign cannot solve the design at speed_m_s (the time-domain strip method at speed <= 0), or "".
+std::string ObliqueSpeedFault(const DesignCase& design, double speed_m_s);
+
+/// Which method a design's oblique solve takes, for notes in outputs: "the time-domain strip method (periodic
+/// steady state, Cs = ... in heave and pitch)" or "the oblique-sea strip theory (STF, Cs = ... in heave and
+/// pitch)".
+std::string ObliqueMethodNote(const DesignCase& design);
+
 /// Sway, heave, roll, pitch and yaw at every heading [deg] and wave frequency [rad/s] at speed_m_s (the running
-/// hull of the design's own speed: the attitude is not re-solved per speed), with the design's water and strip
-/// grid; `options` gives the solver's other settings (its rho, g and speed are replaced by the design's and
-/// speed_m_s). Throws what sk::SolveObliqueStripTheory throws (std::domain_error for an encounter frequency
-/// <= 0) and std::invalid_argument for kxx_m <= 0.
+/// hull of the design's own speed: the attitude is not re-solved per speed), with the design's water, strip
+/// grid, Cs and method (solver.method): the time-domain strip method's periodic steady state on the kernel with
+/// its lateral rows (sk::SolveObliquePeriodic; at 180 deg heave and pitch are the head-sea path's), or the
+/// oblique-sea strip theory (sk::SolveObliqueStripTheory). `options` gives the roll damping (its rho, g, speed
+/// and Cs are replaced by the design's and speed_m_s). `warnings`, when given, receives the strip kernel's
+/// warnings and, for the time-domain method, its validity range at this speed (sk::ValidityWarnings). Throws
+/// what the solvers throw (std::domain_error for an encounter frequency <= 0), std::invalid_argument for
+/// kxx_m <= 0, for settings with an ObliqueTimeDomainFault and for the time-domain method at speed <= 0.
 sk::ObliqueStripResult SolveObliqueDesign(const DesignCase& design, double speed_m_s,
                                           const std::vector<double>& omega_rad_s,
                                           const std::vector<double>& headings_deg, double kxx_m,
-                                          sk::ObliqueStripOptions options = {});
+                                          sk::ObliqueStripOptions options = {},
+                                          std::vector<std::string>* warnings = nullptr);
 
 /// The hull particulars of the viscous roll damping (seakeeping/motions/roll_damping.h): L, B, d, Cb, Cm of one
 /// hull from `hs` (hydrostatics at rest), OG = og_m (the CG below the waterline, positive down); for a

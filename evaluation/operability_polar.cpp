@@ -66,7 +66,7 @@ OperabilityPolar ComputeOperabilityPolar(const ObliqueSolve& solve, double g, co
                                          const sk::ScatterDiagram& diagram,
                                          const std::vector<PolarCriterion>& criteria,
                                          const std::vector<sk::PassengerPosition>& user_points,
-                                         const PolarOptions& options) {
+                                         const PolarOptions& options, const SpeedFault& unsolvable) {
   std::string err;
   if (!options.IsValid(&err)) throw std::invalid_argument("operability polar: " + err);
   if (!diagram.IsValid(&err)) throw std::invalid_argument("scatter diagram: " + err);
@@ -111,10 +111,18 @@ OperabilityPolar ComputeOperabilityPolar(const ObliqueSolve& solve, double g, co
     std::vector<double> solved;
     std::vector<std::size_t> solved_index(nh, nh);
     std::vector<PolarCell> row(nh);
+    const std::string speed_fault = unsolvable ? unsolvable(U) : std::string();
     for (std::size_t h = 0; h < nh; ++h) {
       PolarCell& cell = row[h];
       cell.speed_m_s = U;
       cell.heading_deg = options.headings_deg[h];
+      if (!speed_fault.empty()) {
+        cell.computed = false;
+        cell.operability = std::numeric_limits<double>::quiet_NaN();
+        cell.criterion_share.assign(criteria.size(), std::numeric_limits<double>::quiet_NaN());
+        cell.note = speed_fault;
+        continue;
+      }
       const double w0 = ZeroEncounterWaveFrequency(U, cell.heading_deg, g);
       if (options.omega_rad_s.back() >= w0) {
         cell.computed = false;
@@ -175,23 +183,29 @@ OperabilityPolar ComputeOperabilityPolar(const DesignCase& design, double kxx_m,
   sk::ObliqueStripOptions strip;
   SetDesignRollDamping(design, options.roll_damping, &strip);
   std::vector<PolarFlag> flags;
+  auto raise = [&](const std::string& f, double U, bool method) {
+    auto it = std::find_if(flags.begin(), flags.end(), [&](const PolarFlag& p) { return p.text == f; });
+    if (it == flags.end()) it = flags.insert(flags.end(), PolarFlag{f, {}, method});
+    it->speeds_m_s.push_back(U);
+  };
   const ObliqueSolve solve = [&](double U, const std::vector<double>& headings) {
-    sk::ObliqueStripResult r = SolveObliqueDesign(design, U, options.omega_rad_s, headings, kxx_m, strip);
+    std::vector<std::string> warnings;
+    sk::ObliqueStripResult r = SolveObliqueDesign(design, U, options.omega_rad_s, headings, kxx_m, strip, &warnings);
+    for (const std::string& w : warnings) raise(w, U, true);
     // The flags at this speed's roll natural frequency (SolveObliqueDesign puts the design's rho and g in).
     sk::RollDampingOptions roll = strip.roll_damping;
     roll.rho_kg_m3 = design.water.rho_kg_m3;
     roll.g_m_s2 = design.water.g_m_s2;
-    for (const std::string& f : sk::RollDampingRangeFlags(strip.roll_damping_hull, RollNaturalFrequency(r), U, roll)) {
-      auto it = std::find_if(flags.begin(), flags.end(), [&](const PolarFlag& p) { return p.text == f; });
-      if (it == flags.end()) it = flags.insert(flags.end(), PolarFlag{f, {}});
-      it->speeds_m_s.push_back(U);
-    }
+    for (const std::string& f : sk::RollDampingRangeFlags(strip.roll_damping_hull, RollNaturalFrequency(r), U, roll))
+      raise(f, U, false);
     return r;
   };
-  OperabilityPolar out =
-      ComputeOperabilityPolar(solve, design.water.g_m_s2, design.Extent(), diagram, criteria, user_points, options);
+  OperabilityPolar out = ComputeOperabilityPolar(solve, design.water.g_m_s2, design.Extent(), diagram, criteria,
+                                                 user_points, options,
+                                                 [&](double U) { return ObliqueSpeedFault(design, U); });
+  out.method = ObliqueMethodNote(design);
   out.roll_damping = RollDampingNote(strip);
-  out.roll_damping_flags = std::move(flags);
+  out.flags = std::move(flags);
   return out;
 }
 

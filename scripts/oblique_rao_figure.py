@@ -1,14 +1,16 @@
 #!/usr/bin/python3
 """RAOs of all five modes over headings 90-180 deg at 1000 t and 40 kn, from `hullopt rao` with
-solver.headings_deg (oblique-sea strip theory with the STF speed terms), for
+solver.headings_deg, by the time-domain strip method (default) or, with --method strip_theory_stf, the
+oblique-sea strip theory with the STF speed terms, for
 - mona (default): the Table 1 monohull MONa (Davis & Holloway 2003, configs/davis-holloway-2003/hull14_MONa.yaml),
   roll with potential damping only: docs/figures/oblique_rao_mona_40kn.svg;
 - dut372: the Delft 372 catamaran form of Table 1 at ship scale (the hull of configs/polar-dut372-40kn.yaml),
   roll with the viscous roll damping of solver.roll_damping: ikeda (for a catamaran the demihulls' Cs heave
   damping at their offsets, Cs 0.024): docs/figures/oblique_rao_dut372_40kn.svg.
 Prints the peak of each mode per heading.
-Usage: scripts/oblique_rao_figure.py [--hull mona|dut372] [HULLOPT_BINARY]   (from the repository root; default
-build/app/hullopt)
+Usage: scripts/oblique_rao_figure.py [--hull mona|dut372] [--method time_domain_strip|strip_theory_stf]
+       [HULLOPT_BINARY]   (from the repository root; default build/app/hullopt). The STF figure is written with
+       the suffix _stf.
 The mass blocks are assumed (Table 1 gives none): MONa KG 4.0 m (GM_T about 2 m); DUT372 KG 6.0 m; kyy 0.25 L,
 kxx 0.35 × the overall beam (defaults).
 """
@@ -20,16 +22,23 @@ import tempfile
 
 ROOT = os.path.abspath(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 ARGS = sys.argv[1:]
-HULL = "mona"
-if len(ARGS) >= 2 and ARGS[0] == "--hull":
-    HULL, ARGS = ARGS[1], ARGS[2:]
+HULL, METHOD = "mona", "time_domain_strip"
+while len(ARGS) >= 2 and ARGS[0] in ("--hull", "--method"):
+    if ARGS[0] == "--hull":
+        HULL = ARGS[1]
+    else:
+        METHOD = ARGS[1]
+    ARGS = ARGS[2:]
 if HULL not in ("mona", "dut372"):
     sys.exit("oblique_rao_figure.py: --hull must be mona or dut372")
+if METHOD not in ("time_domain_strip", "strip_theory_stf"):
+    sys.exit("oblique_rao_figure.py: --method must be time_domain_strip or strip_theory_stf")
+METHOD_TITLE = {"time_domain_strip": "time-domain strip method", "strip_theory_stf": "oblique-sea strip theory (STF)"}[METHOD]
 BIN = ARGS[0] if ARGS else os.path.join(ROOT, "build", "app", "hullopt")
-TITLE = {"mona": "MONa (Table 1 monohull), 1000 t, 40 kn (Fn 0.60): RAOs over headings, oblique-sea strip theory "
-                 "(STF), no viscous roll damping",
+TITLE = {"mona": "MONa (Table 1 monohull), 1000 t, 40 kn (Fn 0.60): RAOs over headings, %s, "
+                 "no viscous roll damping",
          "dut372": "DUT372 (Table 1 Delft 372 catamaran form), 1000 t, 40 kn (Fn 0.80): RAOs over headings, "
-                   "oblique-sea strip theory (STF), demihulls' Cs roll damping"}[HULL]
+                   "%s, Cs 0.024"}[HULL] % METHOD_TITLE
 ROLL_LABEL = {"mona": "roll |x4|/kA (potential damping only)",
               "dut372": "roll |x4|/kA (potential + demihulls' Cs damping)"}[HULL]
 HEADINGS = [180, 165, 150, 135, 120, 105, 90]
@@ -46,25 +55,25 @@ def config():
 speed: { kn: 40 }
 mass: { kg_m: 6.0 }
 solver:
-  method: strip_theory_stf
+  method: %s
   Cs: 0.024
   sections: 24
   panels: 8
   headings_deg: [%s]
   roll_damping: ikeda
   frequencies: { range: { quantity: lambda_over_L, from: 0.4, to: 4.0, count: 60 } }
-""" % ", ".join(str(h) for h in HEADINGS)
+""" % (METHOD, ", ".join(str(h) for h in HEADINGS))
     hull = open(os.path.join(ROOT, "configs", "davis-holloway-2003", "hull14_MONa.yaml")).read()
     hull = hull.split("water:")[0]  # the hull block; water and speed below
     return hull + """water: { rho_kg_m3: 1025, g_m_s2: 9.81 }
 speed: { kn: 40 }
 mass: { kg_m: 4.0 }
 solver:
-  method: strip_theory_stf
+  method: %s
   headings_deg: [%s]
   roll_damping: none
   frequencies: { range: { quantity: lambda_over_L, from: 0.4, to: 4.0, count: 60 } }
-""" % ", ".join(str(h) for h in HEADINGS)
+""" % (METHOD, ", ".join(str(h) for h in HEADINGS))
 
 
 def run():
@@ -119,7 +128,8 @@ def svg(rows, notes):
 
 def main():
     rows, notes = run()
-    dst = os.path.join(ROOT, "docs", "figures", "oblique_rao_%s_40kn.svg" % HULL)
+    suffix = "" if METHOD == "time_domain_strip" else "_stf"
+    dst = os.path.join(ROOT, "docs", "figures", "oblique_rao_%s_40kn%s.svg" % (HULL, suffix))
     open(dst, "w").write(svg(rows, notes))
     print("wrote", os.path.relpath(dst, ROOT))
     for hd in HEADINGS:

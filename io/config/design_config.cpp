@@ -3,6 +3,7 @@
 #include <sstream>
 
 #include "evaluation/design_spec.h"
+#include "evaluation/oblique_design.h"
 #include "io/config/motion_config.h"
 #include "io/config/water_config.h"
 #include "io/formats/input_error.h"
@@ -69,8 +70,7 @@ ParsedDesign ParseDesign(YamlMap& root, const std::string& config_file, const st
     // The time-domain strip method in oblique seas needs the kernel's lateral rows: the transient Green
     // function on full sections, momentum form, source sum, all bodies sharing the strips.
     if (!p.headings_deg.empty() && s.solver.rao.method == sk::RaoSolverOptions::Method::kTimeDomainStrip &&
-        (p.kernel == "impulsive" || s.solver.sectional_force != sk::SectionalForce::kMomentum ||
-         s.solver.body_potential != sk::BodyPotential::kSourceSum || !s.solver.rao.interaction))
+        (p.kernel == "impulsive" || !eval::ObliqueTimeDomainFault(s.solver).empty()))
       sm.Fail("headings_deg",
               "with the time-domain strip method needs kernel: transient_green, sectional_force: momentum, "
               "body_potential: source_sum and interaction on (or solver.method: strip_theory_stf)");

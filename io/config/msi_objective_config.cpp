@@ -1,9 +1,12 @@
 #include "io/config/msi_objective_config.h"
 
+#include "evaluation/oblique_design.h"
+
 #include <cstdio>
 #include <numeric>
 
 #include "evaluation/msi_evaluator.h"
+#include "evaluation/oblique_design.h"
 #include "io/config/design_config.h"
 #include "io/formats/input_error.h"
 #include "io/config/motion_config.h"
@@ -134,6 +137,15 @@ std::unique_ptr<opt::Evaluator> ReadMsiObjective(YamlMap& root, YamlMap& objecti
         throw InputError(headings_where + ": heading " + Deg(h) + " deg: at speed the headings must lie in [90, 270] "
                          "(beam to head seas; following and quartering seas reach encounter frequency 0, outside "
                          "the strip theory)");
+  // The time-domain strip method in oblique seas: the kernel's lateral rows and a forward speed.
+  if (o.Oblique() && basis.solver.rao.method == sk::RaoSolverOptions::Method::kTimeDomainStrip) {
+    if (const std::string fault = eval::ObliqueTimeDomainFault(basis.solver); !fault.empty())
+      throw InputError(headings_where + ": with the time-domain strip method " + fault +
+                       " (or solver.method: strip_theory_stf)");
+    if (!(basis.speed.value > 0.0))
+      throw InputError(headings_where + ": the time-domain strip method needs a forward speed > 0 (or "
+                       "solver.method: strip_theory_stf)");
+  }
   basis.kyy_over_L = kyy_over_L;
   basis.kg_over_T = kg_over_T;
   std::vector<std::string> names;

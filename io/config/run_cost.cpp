@@ -16,23 +16,31 @@ namespace {
 //  - memory: the memory operators, S^2/2 matrices p x p (doubles), dominate; responses and force rows add
 //    S p^2 and S^2 P.
 // Constants: CPU seconds of one core, measured with hullopt rao (OMP_NUM_THREADS=1, Release, gcc 12, the shared
-// 2-core build machine) on the Delft 372 catamaran (examples/rao_delft372.yaml, 45 frequencies) at 20 x 8,
-// 40 x 14, 80 x 14, 40 x 28, 80 x 28, 160 x 14, 160 x 28 and 40 x 56 sections x panels: 0.06, 0.33, 1.12,
-// 1.10, 4.28, 4.31, 17.6 and 4.53 s, peak resident memory 11, 13, 19, 18, 37, 41, 110 and 36 MB
-// (tests/unit/test_run_cost.cpp checks the model against these). The Green term alone fits them within 10 %
-// (so kernel cost ~ sections^2 x panels^2 up to 160 x 28); the reduction term, too small to be seen there, is
-// one multiply-add per 1e-10 s (Eigen's blocked products) and matters only near the documented maxima.
-constexpr double kSecondsPerGreenEvaluation = 0.9e-6;
-constexpr double kSecondsPerReductionMultiplyAdd = 1.0e-10;
-// One periodic-path frequency: the kernel's force rows against the motion's normal velocities, S^2/2 x P
-// multiply-adds, plus a 2 x 2 solve (a small part of the runs above).
+// 2-core build machine, adaptive_grid off) on the Delft 372 catamaran (examples/rao_delft372.yaml, 45
+// frequencies) at 40 x 14, 80 x 14, 40 x 28, 80 x 28, 160 x 14, 160 x 28 and 40 x 56 sections x panels: 0.12,
+// 0.58, 0.56, 2.88, 2.61, 18.0 and 2.21 s, peak resident memory 13, 19, 18, 38, 44, 116 and 38 MB
+// (tests/unit/test_run_cost.cpp checks the model against these). The two constants are their least-squares fit
+// in relative error (every run within 25 %): the Green term dominates small strips, the reduction (the
+// coefficient-based p x p products of the memory sums) the large ones.
+constexpr double kSecondsPerGreenEvaluation = 1.9e-7;
+constexpr double kSecondsPerReductionMultiplyAdd = 8.2e-10;
 constexpr double kSecondsPerSweepMultiplyAdd = 2.0e-9;
 // Time marching: every frequency marched to a steady state (up to MarchingOptions::max_periods); measured at
 // 20 x 8, 5 frequencies (0.09 s against 0.06 s periodic with 45) as about 700 periodic sweeps per frequency.
 constexpr double kTimeMarchingFactor = 1000.0;
 // Strip theory (frequency-domain sections): P^2 frequency-domain Green evaluations per section and frequency;
-// measured 44.7 s at 40 x 14, 45 frequencies on the catamaran (28 panels per section).
-constexpr double kSecondsPerFrequencyDomainEvaluation = 3.1e-5;
+// measured 3.45 s at 40 x 14, 45 frequencies on the catamaran (28 panels per section; the half-section heave
+// solver).
+constexpr double kSecondsPerFrequencyDomainEvaluation = 2.4e-6;
+// Oblique seas (docs/performance.md, "Oblique seas: cost per heading", "The time-domain strip method over
+// headings"): the time-domain kernel with its lateral rows is the kernel above on full sections (p = P: twice
+// the Green evaluations, eight times the reduction; 139 ms against 61 ms for the mirror-reduced head-sea
+// kernel of the Delft 372 demihull 40 x 14), and each heading's periodic sweep of three rows costs 22 ms against
+// 6.6 ms for the head-sea sweep; the oblique strip theory's full sections cost 1.94 s per heading at speed
+// against 0.78 s for the head-sea half sections (the catamaran 40 x 14, 20 frequencies; `rao` of the
+// catamaran at 40 x 14, 45 frequencies: 3.45 s head seas, 7.6 s at one heading, 40 s at five).
+constexpr double kObliqueSweepFactorPerHeading = 3.3;
+constexpr double kObliqueStripTheoryFactorPerHeading = 2.5;
 // Libraries, hull and tables: the 20 x 8 run's 0.06 s and 11 MB.
 constexpr double kBaseSeconds = 0.04;
 constexpr double kBaseBytes = 11.0 * 1024 * 1024;
@@ -66,7 +74,9 @@ long CountFrequencies(const YAML::Node& f, long fallback) {
 }  // namespace
 
 RunCost EstimateRunCost(const StripWork& w) {
-  const double S = Steps(w), P = static_cast<double>(w.panels) * w.bodies, p = 0.5 * P;
+  // The time-domain kernel with lateral rows (oblique seas) is built on full sections: no mirror reduction.
+  const bool lateral = w.headings > 0 && w.method == "time_domain_strip";
+  const double S = Steps(w), P = static_cast<double>(w.panels) * w.bodies, p = lateral ? P : 0.5 * P;
   const double F = static_cast<double>(w.frequencies);
   RunCost c;
   if (w.method == "section_time_domain") {
@@ -87,6 +97,11 @@ RunCost EstimateRunCost(const StripWork& w) {
     const double sweep = kSecondsPerSweepMultiplyAdd * 0.5 * S * S * P * F;
     c.sweep_seconds = w.path == "time_marching" ? kTimeMarchingFactor * sweep : sweep;
     c.kernel_bytes = kBaseBytes + 8.0 * (0.5 * S * S * p * p + 0.5 * S * S * (P + p) + 3.0 * S * p * p);
+  }
+  if (w.headings > 0 && w.method == "strip_theory_stf") {
+    c.sweep_seconds *= kObliqueStripTheoryFactorPerHeading * w.headings;
+  } else if (lateral) {
+    c.sweep_seconds *= kObliqueSweepFactorPerHeading * w.headings;
   }
   const double kernels = static_cast<double>(std::max(1L, w.kernels));
   c.seconds = kBaseSeconds + kernels * (c.kernel_seconds + static_cast<double>(std::max(1L, w.sweeps_per_kernel)) * c.sweep_seconds);
@@ -133,8 +148,8 @@ std::string DescribeRunCost(const StripWork& w, const RunCost& c) {
                   w.method == "strip_theory_stf" ? "" : (", " + w.path).c_str());
   }
   char buf[512];
-  std::snprintf(buf, sizeof buf, "cost estimate: %s, %ld frequencies%s: about %s on one core, %s of memory", what,
-                w.frequencies,
+  std::snprintf(buf, sizeof buf, "cost estimate: %s, %ld frequencies%s%s: about %s on one core, %s of memory", what,
+                w.frequencies, w.headings > 0 ? (" x " + std::to_string(w.headings) + " headings").c_str() : "",
                 w.sweeps_per_kernel > 1 ? (" x " + std::to_string(w.sweeps_per_kernel) + " sweeps").c_str() : "",
                 Seconds(c.seconds).c_str(), Bytes(c.bytes).c_str());
   return buf;
@@ -159,6 +174,7 @@ std::string RunCostRefusal(const StripWork& w, const RunCost& c) {
                " each)";
     else if (c.sweep_seconds > c.kernel_seconds)
       driver = "solver.frequencies (" + std::to_string(w.frequencies) + ")" +
+               (w.headings > 0 ? " at " + std::to_string(w.headings) + " headings" : std::string()) +
                (w.path == "time_marching" ? " on solver.path: time_marching" : std::string()) + " drives it";
     else
       driver = resolution + " drive it (time grows as sections^2 x panels^2 to sections^3 x panels^3)";

@@ -25,6 +25,9 @@ struct StripWork {
   int parallel = 1;                          ///< kernels held in memory at once
   std::string parallel_key;                  ///< what sets `parallel` (e.g. "--threads"), for the message
   int lags = 6000;                           ///< section_time_domain: lag horizon (its max_lags cap)
+  /// Oblique seas: the headings of each sweep (`rao`'s solver.headings_deg, a campaign objective's or the
+  /// polar's headings_deg); 0 for the head-sea path.
+  int headings = 0;
   /// The config key or option that sets `kernels` ("" for one design), named when the count drives a refusal.
   std::string count_key;
 };

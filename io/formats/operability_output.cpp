@@ -78,7 +78,7 @@ void WriteOperabilityPolarCsv(const std::string& path, const eval::OperabilityPo
     // raised at its speed.
     std::string text = cell.note;
     if (cell.computed)
-      for (const auto& flag : polar.roll_damping_flags)
+      for (const auto& flag : polar.flags)
         if (std::find(flag.speeds_m_s.begin(), flag.speeds_m_s.end(), cell.speed_m_s) != flag.speeds_m_s.end())
           text += (text.empty() ? "warning: " : "; warning: ") + flag.text;
     std::string note;

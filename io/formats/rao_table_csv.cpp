@@ -46,6 +46,18 @@ sk::RaoTable ReadRaoTableCsv(const std::string& path, double g) {
                            "pitch_amp,pitch_phase_deg)");
       continue;
     }
+    // A rao.csv over headings (`rao` with solver.headings_deg) gives head seas only in its 180 deg rows; any
+    // other heading read as head seas would imply another speed, or none, and a wrong MSI.
+    if (col.count("wave_direction_deg")) {
+      const size_t c = col["wave_direction_deg"];
+      const std::string cell = c < cells.size() ? cells[c] : std::string();
+      char* end = nullptr;
+      const double beta = std::strtod(cell.c_str(), &end);
+      if (cell.empty() || *end != '\0' || beta != 180.0)
+        throw InputError(where + ": wave_direction_deg = " + cell +
+                         ": a RAO file is read for head seas (180 deg) only; oblique seas are computed from the "
+                         "design's config (hull: with operability.polar)");
+    }
     std::map<std::string, double> v;
     for (const auto& name : required) {
       const size_t c = col[name];

@@ -157,16 +157,28 @@ std::string RenderOperabilityPolarSvg(const eval::OperabilityPolar& polar, const
         << "\" stroke-dasharray=\"3 3\"/>\n";
   svg << "</g>\n<g class=\"labels\" font-size=\"12\" fill=\"#222\">\n";
   // Speed labels down the following-seas axis (where a polar of 90–270° has no cells), on a white ground.
+  // A speed at which the method raised a warning of its own (its validity range) is starred: its cells'
+  // motions are outside the method's assumptions.
+  bool any_starred = false;
   for (std::size_t i = 0; i < speeds.size(); ++i) {
     const double r = R(speeds[i]), t = ScreenAngle(0.0);
+    bool starred = false;
+    for (const auto& f : polar.flags)
+      for (double u : f.speeds_m_s) starred = starred || (f.method && std::fabs(u / kKnot - speeds[i]) < 1e-9);
+    any_starred = any_starred || starred;
     char buf[32];
-    std::snprintf(buf, sizeof buf, "%g kn", speeds[i]);
-    svg << "<rect x=\"" << F(Px(r, t) - 22) << "\" y=\"" << F(Py(r, t) - 9) << "\" width=\"44\" height=\"15\" rx=\"3\" "
+    std::snprintf(buf, sizeof buf, "%g kn%s", speeds[i], starred ? " *" : "");
+    const double w = starred ? 54.0 : 44.0;
+    svg << "<rect x=\"" << F(Px(r, t) - 0.5 * w) << "\" y=\"" << F(Py(r, t) - 9) << "\" width=\"" << F(w)
+        << "\" height=\"15\" rx=\"3\" "
         << "fill=\"white\" fill-opacity=\"0.85\"/><text x=\"" << F(Px(r, t)) << "\" y=\"" << F(Py(r, t) + 3)
         << "\" text-anchor=\"middle\">" << buf << "</text>\n";
   }
   svg << "<text x=\"" << F(kCx + 30) << "\" y=\"" << F(kCy + 0.5 * kRadius) << "\" font-size=\"11\" fill=\"#555\">"
       << "speed (radius)</text>\n";
+  if (any_starred)
+    svg << "<text x=\"" << F(kCx + 30) << "\" y=\"" << F(kCy + 0.5 * kRadius + 15) << "\" font-size=\"11\" fill=\"#555\">"
+        << "* outside the method's validity range (notes)</text>\n";
   for (double b : {0.0, 45.0, 90.0, 135.0, 180.0, 225.0, 270.0, 315.0}) {
     const double t = ScreenAngle(b), r = kRadius + 22.0;
     std::string text = std::to_string(int(b)) + "°";
@@ -196,7 +208,7 @@ std::string RenderOperabilityPolarSvg(const eval::OperabilityPolar& polar, const
   if (any_missing)
     svg << "<rect x=\"" << bx + bw + 90 << "\" y=\"" << by << "\" width=\"18\" height=\"14\" fill=\"url(#hatch)\"/>"
         << "<text x=\"" << bx + bw + 112 << "\" y=\"" << by + 12
-        << "\" font-size=\"11\">not computed (ω_e ≤ 0)</text>\n";
+        << "\" font-size=\"11\">not computed (notes)</text>\n";
   double y = by + 52.0;
   for (const auto& n : lines) {
     svg << "<text x=\"20\" y=\"" << F(y) << "\" font-size=\"11\" fill=\"#444\">" << HtmlEscape(n) << "</text>\n";

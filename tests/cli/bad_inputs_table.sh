@@ -57,6 +57,7 @@ awk -F, 'NR == 5 { $4 = "1e300" } { print }' OFS=, "$R" > "$T/rao_huge.csv"
 awk -F, 'NR == 9 { $1 = $1 * 1.2 } { print }' OFS=, "$R" > "$T/rao_mixed.csv"
 head -3 "$R" > "$T/rao_one_row.csv"
 grep -v '^#' "$R" | cut -d, -f1-4 > "$T/rao_no_pitch.csv"
+grep -v '^#' "$R" | awk 'NR == 1 { print "wave_direction_deg," $0; next } { print "120," $0 }' > "$T/rao_heading.csv"
 EV="name: x
 hull_extent: { cg_to_transom_m: 18.0, cg_to_bow_m: 24.0 }
 speed: { kn: 40 }
@@ -576,6 +577,10 @@ DESC='campaign objective `headings_deg` with `measure: P_E_kW`'
 w obj_head_pe "$OPT
 optimize: { variables: { L_over_B: [8, 16] }, objective: { measure: P_E_kW, headings_deg: [150] } }"
 run obj_head_pe 1 "applies to measure: msi or rms_accel only" - -- optimize "$T/obj_head_pe.yaml" --out "$T/o107"
+DESC='rao.csv of `rao` with headings: a 120 deg row (read as head seas it would be another speed)'
+w ev_heading "rao_csv: $T/rao_heading.csv
+$EV"
+run rao_csv_heading 1 "rao_heading.csv:2: wave_direction_deg = 120: a RAO file is read for head seas" - -- evaluate "$T/ev_heading.yaml" --out "$T/o108"
 
 # Not a row: without a mass block, hydrostatics.json's KG is the documented default, the draught.
 w nomass "hull: { parametric: { $P } }"

@@ -61,5 +61,18 @@ check "--force is noted on the estimate line" 'grep -qF "running because of --fo
 rows=$(grep -vc '^#' "$T/opt/history.csv")
 check "the forced campaign converged early ($rows rows)" '[ "$rows" -gt 2 ] && [ "$rows" -lt 500 ]'
 
+# 4. An explore over five headings by the oblique-sea strip theory at 40 x 14 (each design about 40 s of one
+# core, 200 samples): refused, the headings on the estimate line and the sample count named (the time-domain
+# method's estimate for the same campaign, within the limits, is checked in tests/unit/test_run_cost.cpp).
+sed -e 's/solver: { Cs: 0.065, sections: 20, panels: 8 }/solver: { Cs: 0.065, sections: 40, panels: 14, method: strip_theory_stf }/' \
+    -e 's/^optimize:/explore:/' -e 's/  max_evaluations: 1000000/  samples: 200/' -e '/algorithm:\|xtol_rel/d' \
+    -e 's/  objective: { measure: msi, position: mean }/  objective: { measure: msi, position: mean, headings_deg: [180, 165, 150, 135, 120] }/' \
+    "$T/opt.yaml" > "$T/ex_stf.yaml"
+"$BIN" explore "$T/ex_stf.yaml" --out "$T/ex_stf" --quiet > /dev/null 2> "$T/ex_stf.err"
+rc=$?
+check "explore over 5 headings by STF refused with exit 1 (got $rc: $(cat "$T/ex_stf.err"))" '[ $rc -eq 1 ]'
+check "the refusal counts the headings and names the samples" \
+  'grep -qF "x 5 headings" "$T/ex_stf.err" && grep -qF "explore.samples drives it" "$T/ex_stf.err"'
+
 [ $fail -eq 0 ] && echo "cost_estimate: refusal, --force and the estimate line behave as documented"
 exit $fail

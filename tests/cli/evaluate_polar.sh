@@ -1,10 +1,12 @@
 #!/usr/bin/env bash
 # `hullopt evaluate` with `operability.polar` end to end on a coarse Delft 372 model (10 sections x 6 panels,
-# 8 frequencies): operability_polar.csv has a row per (speed, heading) with the documented columns, shares in
+# 8 frequencies), by the oblique-sea strip theory (method strip_theory_stf): operability_polar.csv has a row per (speed, heading) with the documented columns, shares in
 # [0, 1], following seas at speed marked (empty values, a note) and computed at zero speed; the SVG is written
 # with head seas labelled and the hatching of the cells not computed; the viscous roll damping (default ikeda:
 # for the catamaran the demihulls' Cs term, flagged) is stated and its flags reach the CSV's notes, stderr, the
-# SVG and summary.json, and with solver.roll_damping: none nothing is flagged; a polar on RAO files is refused.
+# SVG and summary.json, and with solver.roll_damping: none nothing is flagged; by the time-domain strip method
+# (the default) the zero-speed cells are not computed (a note) and the speed below the method's Froude range is
+# flagged; a polar on RAO files is refused.
 set -euo pipefail
 HULLOPT=${1:?usage: evaluate_polar.sh /path/to/hullopt}
 HULLOPT=$(cd "$(dirname "$HULLOPT")" && pwd)/$(basename "$HULLOPT")
@@ -19,7 +21,7 @@ hull: { offsets_csv: $ROOT/data/delft372/delft372_offsets.csv, draught_m: 0.15, 
 speed: { Fn: 0.5 }
 water: { rho_kg_m3: 1000 }
 mass: { kg_m: 0.34, kxx_m: 0.3 }
-solver: { sections: 10, panels: 6, adaptive_grid: off,
+solver: { method: strip_theory_stf, sections: 10, panels: 6, adaptive_grid: off,
           frequencies: { range: { quantity: omega_rad_s, from: 2.0, to: 9.0, count: 8 } } }
 seas: [ { Hs_m: 0.1, Tz_s: 2.5 } ]
 operability:
@@ -78,6 +80,33 @@ import csv, sys
 rows = list(csv.DictReader(open(sys.argv[1])))
 assert len(rows) == 4, len(rows)
 assert all(r["note"] == "" or "encounter frequency <= 0" in r["note"] for r in rows), rows
+PY
+
+# The time-domain strip method (the default): no zero speed (the hull passing through the strips), 4 kn
+# (Fn 0.39) below its Froude range, flagged in every computed cell and starred in the plot.
+sed -e 's/method: strip_theory_stf, //' "$TMP/polar.yaml" > "$TMP/td.yaml"
+(cd "$TMP" && "$HULLOPT" evaluate td.yaml --out out_td > /dev/null 2> err_td.txt) \
+  || fail "evaluate with the time-domain method failed: $(cat "$TMP/err_td.txt")"
+grep -q "The time-domain strip method (periodic steady state, Cs = 0 in heave and pitch)" \
+  "$TMP/out_td/operability_polar.svg" || fail "td: the SVG does not name the method"
+grep -q ">4 kn \*<" "$TMP/out_td/operability_polar.svg" && grep -q "outside the method&#39;s validity range\|outside the method's validity range" \
+  "$TMP/out_td/operability_polar.svg" || fail "td: the SVG does not star the speed below the Froude range"
+! grep -q ">0 kn \*<" "$TMP/out_td/operability_polar.svg" || fail "td: the SVG stars the speed not computed"
+grep -q "operability polar: Fn 0.3[0-9]* is below the validity range of the 2D+t strip method.*(at 4 kn)" \
+  "$TMP/err_td.txt" || fail "td: the Froude range flag does not name its speed"
+/usr/bin/python3 - "$TMP/out_td/operability_polar.csv" <<'PY' || fail "td: operability_polar.csv"
+import csv, sys
+rows = list(csv.DictReader(open(sys.argv[1])))
+assert len(rows) == 8, len(rows)
+for r in rows:
+    kn, beta = float(r["speed_kn"]), float(r["wave_direction_deg"])
+    if kn == 0:
+        assert r["operability"] == "" and "needs a forward speed" in r["note"], r
+    elif beta == 0:
+        assert r["operability"] == "" and "encounter frequency <= 0" in r["note"], r
+    else:
+        assert "below the validity range" in r["note"], r
+        assert 0.0 <= float(r["operability"]) <= 1.0, r
 PY
 
 # RAO files have no oblique-sea motions: the polar is refused there.

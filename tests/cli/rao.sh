@@ -54,6 +54,8 @@ check_headings() {
   grep -v '^#' "$1/rao.csv" | tail -n +2 | awk -F, '$1 == 90 && $11 < 0.1 { exit 1 }' || fail "$1: beam seas without roll"
 }
 check_headings "$tmp/headings"
+grep -q "^# the oblique-sea strip theory (STF, Cs = .* in heave and pitch) at 3 headings" "$tmp/headings/rao.csv" ||
+  fail "strip_theory_stf headings rao.csv does not name the method and its Cs"
 grep -q "roll damping: the demihulls' Cs heave damping" "$tmp/headings/rao.csv" ||
   fail "headings rao.csv does not say which roll damping the catamaran has"
 grep -q "^# warning: roll damping: Ikeda's monohull formulae do not cover a demihull pair" "$tmp/headings/rao.csv" ||
@@ -69,13 +71,23 @@ sed 's/solver: { /solver: { headings_deg: [180, 120, 90], /; s/kyy_m: 0.782 }/ky
   "$tmp/td_head.yaml" > "$tmp/td_headings.yaml"
 "$bin" rao "$tmp/td_headings.yaml" --out "$tmp/td_headings" --no-plots --quiet || fail "time-domain headings run refused"
 check_headings "$tmp/td_headings"
-grep -q "^# time-domain strip method (periodic steady state) at 3 headings" "$tmp/td_headings/rao.csv" ||
+grep -q "^# the time-domain strip method (periodic steady state, Cs = .* in heave and pitch) at 3 headings" "$tmp/td_headings/rao.csv" ||
   fail "time-domain headings rao.csv does not name the method"
 paste -d, <(grep -v '^#' "$tmp/td_head/rao.csv" | tail -n +2) \
   <(grep -v '^#' "$tmp/td_headings/rao.csv" | tail -n +2 | awk -F, '$1 == 180') |
   awk -F, 'function rel(a, b) { d = a - b; if (d < 0) d = -d; return d / (b < 0 ? -b : b) }
            rel($12, $4) > 1e-8 || rel($14, $6) > 1e-8 { print; exit 1 }' ||
   fail "time-domain headings at 180 deg differ from the head-sea run"
+# evaluate reads a headings rao.csv whose rows are all at 180 deg as head seas, and refuses one with other
+# headings at the first such row.
+grep -v '^#' "$tmp/td_headings/rao.csv" | awk -F, 'NR == 1 || $1 == 180' > "$tmp/rao_180.csv"
+printf 'rao_csv: rao_180.csv\nhull_extent: { cg_to_transom_m: 1.41, cg_to_bow_m: 1.59 }\nseas: [ { Hs_m: 0.1, Tz_s: 2.5 } ]\n' \
+  > "$tmp/ev_180.yaml"
+(cd "$tmp" && "$bin" evaluate ev_180.yaml --out ev_180 --quiet --no-plots) || fail "evaluate refused a 180 deg headings rao.csv"
+sed 's#rao_180.csv#td_headings/rao.csv#' "$tmp/ev_180.yaml" > "$tmp/ev_all.yaml"
+(cd "$tmp" && ! "$bin" evaluate ev_all.yaml --out ev_all --quiet 2> ev_all.err) || fail "evaluate read a rao.csv over headings"
+grep -q "wave_direction_deg = 120: a RAO file is read for head seas (180 deg) only" "$tmp/ev_all.err" ||
+  fail "evaluate's refusal of a rao.csv over headings: $(cat "$tmp/ev_all.err")"
 
 expect_error() {  # $1: name, $2: config text, $3: text the message must contain
   echo "$2" > "$tmp/$1.yaml"

@@ -11,7 +11,8 @@
 //  - a built monohull design (the MONa form of Table 1, coarse strips) with the viscous roll damping: in beam
 //    seas a roll limit between the rms roll of the design solved without and with Ikeda's damping (each from
 //    eval::SolveObliqueDesign and the point statistics) fails in the polar without it and holds with it, and
-//    the hull, outside the fitted range (Cb 0.39 < 0.5), is flagged at the polar's speed.
+//    the hull, outside the fitted range (Cb 0.39 < 0.5), is flagged at the polar's speed, as is the design's
+//    method (the time-domain strip method) below its Froude range.
 #include <algorithm>
 #include <catch2/catch.hpp>
 #include <cmath>
@@ -236,10 +237,15 @@ TEST_CASE("operability polar of a design with the viscous roll damping", "[verif
   CHECK(none.cells[0].operability == 0.0);
   CHECK(viscous.cells[0].operability == 1.0);
   CHECK(none.roll_damping == "potential only");
-  CHECK(none.roll_damping_flags.empty());
+  // The design's method, the time-domain strip method, is below its Froude range at 20 kn (Fn 0.30): that is
+  // flagged at this speed, and with potential roll damping it is the only flag.
+  CHECK(none.method.find("time-domain strip method") != std::string::npos);
+  REQUIRE(none.flags.size() == 1);
+  CHECK(none.flags[0].text.find("below the validity range") != std::string::npos);
+  CHECK(none.flags[0].speeds_m_s == std::vector<double>{U});
   CHECK(viscous.roll_damping.find("Ikeda's components") != std::string::npos);
   bool cb = false;
-  for (const auto& f : viscous.roll_damping_flags) {
+  for (const auto& f : viscous.flags) {
     std::printf("flag: %s\n", f.text.c_str());
     CHECK(f.speeds_m_s == std::vector<double>{U});
     cb = cb || f.text.find("Cb") != std::string::npos;
