@@ -50,7 +50,21 @@ std::vector<cd> ComputeDawsonIntegralTable() {
   for (int i = 1; i <= kGridN; ++i) t.Step(i - 1, 0, i, 0);
   for (int i = 0; i <= kGridN; ++i)
     for (int j = 1; j <= kGridN; ++j) t.Step(i, j - 1, i, j);
-  return std::move(t.coef);
+  // G's coefficients (dawson_integral_table.h) from Φ's: G0 = −c_0 − x0 c_1 + 2x0²(C − c_0),
+  // G1 = −2c_1 − x0(1 + 4(c_0 − C)), the δ² coefficient 2C − 3/2 − 2c_0, then −4c_k/((k + 1)(k + 2)).
+  std::vector<cd> out = std::move(t.coef);
+  out.resize(kValues + kKernelValues);
+  for (int i = 0; i <= kGridN; ++i)
+    for (int j = 0; j <= i; ++j) {
+      const cd x0(i * kGridStep, j * kGridStep);
+      const cd* c = &out[NodeOffset(i, j)];
+      cd* e = &out[kValues + KernelNodeOffset(i, j)];
+      e[0] = -c[0] - x0 * c[1] + 2.0 * x0 * x0 * (kPhiConstant - c[0]);
+      e[1] = -2.0 * c[1] - x0 * (1.0 + 4.0 * (c[0] - kPhiConstant));
+      e[2] = (2.0 * kPhiConstant - 1.5) - 2.0 * c[0];
+      for (int k = 1; k <= kKernelTerms; ++k) e[k + 2] = (-4.0 / ((k + 1) * (k + 2))) * c[k];
+    }
+  return out;
 }
 
 }  // namespace hullopt::sk::dawson_table

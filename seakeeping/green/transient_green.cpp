@@ -30,9 +30,6 @@ const double kSqrtPi = std::sqrt(M_PI);
 // of H_t and H' lose ~ε·2|x|² and ~ε·2|x|⁴ there.
 constexpr double kAsymptoticRadius = 6.0;
 constexpr int kAsymptoticTerms = 30;
-// (γ + ln 4)/4: Φ(x) − ½ ln x → this constant as x → +∞.
-constexpr double kPhiConstant = (0.57721566490153286060651209 + 1.38629436111989061883446424) / 4.0;
-
 // c_n = (2n−1)!!/2^{n+1}, n = 0.. (c_0 = 1/2): the coefficients of F(x) ~ Σ c_n x^{−(2n+1)}.
 const std::array<double, kAsymptoticTerms + 1>& AsymptoticCoefficients() {
   static const auto c = [] {
@@ -85,35 +82,45 @@ cd Dawson(cd x) {
 }
 
 namespace {
-
-// Φ and F below |x| = 6 from the table of seakeeping/green/dawson_integral_table.h (Taylor coefficients per
-// node, evaluated by Horner's rule): this lookup is the hot spot of the strip-kernel build. The table is embedded
-// in the library (computed when hullopt is built).
-using dawson_table::kCoefficients;
+// Φ (first table) and G (second table, for K) below |x| = 6 from the tables of
+// seakeeping/green/dawson_integral_table.h (Taylor coefficients per node, evaluated by Horner's rule): this
+// lookup is the hot spot of the strip-kernel build. The tables are embedded in the library (computed when
+// hullopt is built). A table is described by its data, its coefficients per node and its node layout.
 using dawson_table::kGridStep;
 using dawson_table::kInvGridStep;
-using dawson_table::NodeOffset;
-using dawson_table::Table;
+using dawson_table::kPhiConstant;
 
+struct PhiTable {  // Φ over the quadrant's square of nodes
+  static constexpr int kTerms = dawson_table::kCoefficients;
+  static const cd* Data() { return dawson_table::Table(); }
+  static std::size_t Offset(int i, int j) { return dawson_table::NodeOffset(i, j); }
+};
+struct KernelTable {  // G over the sector 0 <= arg x <= π/4 (j <= i): K = 8a(G + x² ln x)
+  static constexpr int kTerms = dawson_table::kKernelCoefficients;
+  static const cd* Data() { return dawson_table::KernelTable(); }
+  static std::size_t Offset(int i, int j) { return dawson_table::KernelNodeOffset(i, j); }
+};
+
+template <class Tab>
 const cd* NodeCoefficients(const cd* table, cd x, cd* delta) {
   // x is in the first quadrant: rounding by +0.5 truncation (cheaper than lround on this hot path).
   // Multiplication by 1/step rather than division: a point halfway between nodes may round to either, and
-  // both are within the Taylor radius.
+  // both are within the Taylor radius. For KernelTable, Im x <= Re x gives j <= i (rounding is monotonic).
   const int i = static_cast<int>(x.real() * kInvGridStep + 0.5);
   const int j = static_cast<int>(x.imag() * kInvGridStep + 0.5);
   *delta = x - cd(i * kGridStep, j * kGridStep);
-  return table + NodeOffset(i, j);
+  return table + Tab::Offset(i, j);
 }
-const cd* NodeCoefficients(cd x, cd* delta) { return NodeCoefficients(Table(), x, delta); }
 
 // Horner's rule in real arithmetic: std::complex multiplication carries a NaN/infinity recovery branch
 // (C99 Annex G) on every step; the values here are finite, and the products are the same.
-cd DawsonIntegralTableOnly(cd x) {
+template <class Tab>
+cd TableValue(cd x) {
   cd d;
-  const cd* c = NodeCoefficients(x, &d);
+  const cd* c = NodeCoefficients<Tab>(Tab::Data(), x, &d);
   const double dr = d.real(), di = d.imag();
-  double pr = c[kCoefficients - 1].real(), pi = c[kCoefficients - 1].imag();
-  for (int k = kCoefficients - 2; k >= 0; --k) {
+  double pr = c[Tab::kTerms - 1].real(), pi = c[Tab::kTerms - 1].imag();
+  for (int k = Tab::kTerms - 2; k >= 0; --k) {
     const double t = pr * dr - pi * di + c[k].real();
     pi = pr * di + pi * dr + c[k].imag();
     pr = t;
@@ -121,33 +128,9 @@ cd DawsonIntegralTableOnly(cd x) {
   return {pr, pi};
 }
 
-// Φ and F together from the table.
-struct PhiAndF {
-  cd phi, f;
-};
-PhiAndF DawsonIntegralTable(cd x) {
-  cd d;
-  const cd* c = NodeCoefficients(x, &d);
-  constexpr int M = kCoefficients - 1;
-  const double dr = d.real(), di = d.imag();
-  double pr = c[M].real(), pi = c[M].imag();
-  double fr = M * pr, fi = M * pi;
-  for (int k = M - 1; k >= 1; --k) {
-    const double t = pr * dr - pi * di + c[k].real();
-    pi = pr * di + pi * dr + c[k].imag();
-    pr = t;
-    const double u = fr * dr - fi * di + k * c[k].real();
-    fi = fr * di + fi * dr + k * c[k].imag();
-    fr = u;
-  }
-  const double t = pr * dr - pi * di + c[0].real();
-  pi = pr * di + pi * dr + c[0].imag();
-  return {cd(t, pi), cd(fr, fi)};
-}
-
 // The same for L points at once, their Horner chains interleaved: each chain is a sequence of dependent
 // multiply-adds (latency-bound), so independent chains fill the pipeline; the arithmetic per point is that
-// of DawsonIntegralTableOnly / DawsonIntegralTable.
+// of TableValue.
 #if defined(__SSE2__)
 // One complex Horner step p·d + c with p, c as [re, im] in one SSE2 register and d given as [dr, dr] and
 // [−di, di]: [pr·dr + (−pi·di), pi·dr + pr·di] + c, the same products and sums (in the same order up to the
@@ -165,85 +148,37 @@ inline cd Store(__m128d v) {
 }
 #endif
 
-template <int L>
-void DawsonIntegralTableOnlyN(const cd* x, cd* phi) {
-  const cd* table = Table();
+template <class Tab, int L>
+void TableValuesN(const cd* x, cd* out) {
+  constexpr int T = Tab::kTerms;
+  const cd* table = Tab::Data();
   const cd* c[L];
 #if defined(__SSE2__)
   __m128d d_re[L], d_im[L], p[L];
   for (int n = 0; n < L; ++n) {
     cd d;
-    c[n] = NodeCoefficients(table, x[n], &d);
+    c[n] = NodeCoefficients<Tab>(table, x[n], &d);
     d_re[n] = _mm_set1_pd(d.real()), d_im[n] = _mm_set_pd(d.imag(), -d.imag());
-    p[n] = Load(&c[n][kCoefficients - 1]);
+    p[n] = Load(&c[n][T - 1]);
   }
-  for (int k = kCoefficients - 2; k >= 0; --k)
+  for (int k = T - 2; k >= 0; --k)
     for (int n = 0; n < L; ++n) p[n] = ComplexMulAdd(p[n], d_re[n], d_im[n], Load(&c[n][k]));
-  for (int n = 0; n < L; ++n) phi[n] = Store(p[n]);
+  for (int n = 0; n < L; ++n) out[n] = Store(p[n]);
 #else
   double dr[L], di[L], pr[L], pi[L];
   for (int n = 0; n < L; ++n) {
     cd d;
-    c[n] = NodeCoefficients(table, x[n], &d);
+    c[n] = NodeCoefficients<Tab>(table, x[n], &d);
     dr[n] = d.real(), di[n] = d.imag();
-    pr[n] = c[n][kCoefficients - 1].real(), pi[n] = c[n][kCoefficients - 1].imag();
+    pr[n] = c[n][T - 1].real(), pi[n] = c[n][T - 1].imag();
   }
-  for (int k = kCoefficients - 2; k >= 0; --k)
+  for (int k = T - 2; k >= 0; --k)
     for (int n = 0; n < L; ++n) {
       const double t = pr[n] * dr[n] - pi[n] * di[n] + c[n][k].real();
       pi[n] = pr[n] * di[n] + pi[n] * dr[n] + c[n][k].imag();
       pr[n] = t;
     }
-  for (int n = 0; n < L; ++n) phi[n] = cd(pr[n], pi[n]);
-#endif
-}
-
-template <int L>
-void DawsonIntegralTableN(const cd* x, PhiAndF* out) {
-  constexpr int M = kCoefficients - 1;
-  const cd* table = Table();
-  const cd* c[L];
-#if defined(__SSE2__)
-  __m128d d_re[L], d_im[L], p[L], f[L];
-  for (int n = 0; n < L; ++n) {
-    cd d;
-    c[n] = NodeCoefficients(table, x[n], &d);
-    d_re[n] = _mm_set1_pd(d.real()), d_im[n] = _mm_set_pd(d.imag(), -d.imag());
-    p[n] = Load(&c[n][M]);
-    f[n] = _mm_mul_pd(_mm_set1_pd(M), p[n]);
-  }
-  for (int k = M - 1; k >= 1; --k) {
-    const __m128d kk = _mm_set1_pd(k);
-    for (int n = 0; n < L; ++n) {
-      const __m128d ck = Load(&c[n][k]);
-      p[n] = ComplexMulAdd(p[n], d_re[n], d_im[n], ck);
-      f[n] = ComplexMulAdd(f[n], d_re[n], d_im[n], _mm_mul_pd(kk, ck));
-    }
-  }
-  for (int n = 0; n < L; ++n)
-    out[n] = {Store(ComplexMulAdd(p[n], d_re[n], d_im[n], Load(&c[n][0]))), Store(f[n])};
-#else
-  double dr[L], di[L], pr[L], pi[L], fr[L], fi[L];
-  for (int n = 0; n < L; ++n) {
-    cd d;
-    c[n] = NodeCoefficients(table, x[n], &d);
-    dr[n] = d.real(), di[n] = d.imag();
-    pr[n] = c[n][M].real(), pi[n] = c[n][M].imag();
-    fr[n] = M * pr[n], fi[n] = M * pi[n];
-  }
-  for (int k = M - 1; k >= 1; --k)
-    for (int n = 0; n < L; ++n) {
-      const double t = pr[n] * dr[n] - pi[n] * di[n] + c[n][k].real();
-      pi[n] = pr[n] * di[n] + pi[n] * dr[n] + c[n][k].imag();
-      pr[n] = t;
-      const double u = fr[n] * dr[n] - fi[n] * di[n] + k * c[n][k].real();
-      fi[n] = fr[n] * di[n] + fi[n] * dr[n] + k * c[n][k].imag();
-      fr[n] = u;
-    }
-  for (int n = 0; n < L; ++n) {
-    const double t = pr[n] * dr[n] - pi[n] * di[n] + c[n][0].real();
-    out[n] = {cd(t, pr[n] * di[n] + pi[n] * dr[n] + c[n][0].imag()), cd(fr[n], fi[n])};
-  }
+  for (int n = 0; n < L; ++n) out[n] = cd(pr[n], pi[n]);
 #endif
 }
 
@@ -273,50 +208,24 @@ __attribute__((target("avx"))) inline void Offsets2(cd d0, cd d1, __m256d* d_re,
   *d_im = _mm256_set_pd(d1.imag(), -d1.imag(), d0.imag(), -d0.imag());
 }
 
-// P = 2H points, H registers: with H = 4 eight independent dependency chains (sixteen for Φ and F), enough
-// to hide the latency of a complex step (shuffle, multiply, two adds); with two registers it is latency-bound.
-template <int H>
-__attribute__((target("avx"))) void DawsonIntegralTableOnlyAvx(const cd* x, cd* phi) {
-  const cd* table = Table();
+
+// P = 2H points, H registers: with H = 4 eight independent dependency chains, enough to hide the latency of a
+// complex step (shuffle, multiply, two adds); with two registers it is latency-bound.
+template <class Tab, int H>
+__attribute__((target("avx"))) void TableValuesAvx(const cd* x, cd* out) {
+  constexpr int T = Tab::kTerms;
+  const cd* table = Tab::Data();
   const cd* c[2 * H];
   cd d[2 * H];
-  for (int n = 0; n < 2 * H; ++n) c[n] = NodeCoefficients(table, x[n], &d[n]);
+  for (int n = 0; n < 2 * H; ++n) c[n] = NodeCoefficients<Tab>(table, x[n], &d[n]);
   __m256d d_re[H], d_im[H], p[H];
   for (int h = 0; h < H; ++h) {
     Offsets2(d[2 * h], d[2 * h + 1], &d_re[h], &d_im[h]);
-    p[h] = Load2(&c[2 * h][kCoefficients - 1], &c[2 * h + 1][kCoefficients - 1]);
+    p[h] = Load2(&c[2 * h][T - 1], &c[2 * h + 1][T - 1]);
   }
-  for (int k = kCoefficients - 2; k >= 0; --k)
+  for (int k = T - 2; k >= 0; --k)
     for (int h = 0; h < H; ++h) p[h] = ComplexMulAdd256(p[h], d_re[h], d_im[h], Load2(&c[2 * h][k], &c[2 * h + 1][k]));
-  for (int h = 0; h < H; ++h) Store2(p[h], &phi[2 * h], &phi[2 * h + 1]);
-}
-
-template <int H>
-__attribute__((target("avx"))) void DawsonIntegralTableAvx(const cd* x, PhiAndF* out) {
-  constexpr int M = kCoefficients - 1;
-  const cd* table = Table();
-  const cd* c[2 * H];
-  cd d[2 * H];
-  for (int n = 0; n < 2 * H; ++n) c[n] = NodeCoefficients(table, x[n], &d[n]);
-  __m256d d_re[H], d_im[H], p[H], f[H];
-  for (int h = 0; h < H; ++h) {
-    Offsets2(d[2 * h], d[2 * h + 1], &d_re[h], &d_im[h]);
-    p[h] = Load2(&c[2 * h][M], &c[2 * h + 1][M]);
-    f[h] = _mm256_mul_pd(_mm256_set1_pd(M), p[h]);
-  }
-  for (int k = M - 1; k >= 1; --k) {
-    const __m256d kk = _mm256_set1_pd(k);
-    for (int h = 0; h < H; ++h) {
-      const __m256d ck = Load2(&c[2 * h][k], &c[2 * h + 1][k]);
-      p[h] = ComplexMulAdd256(p[h], d_re[h], d_im[h], ck);
-      f[h] = ComplexMulAdd256(f[h], d_re[h], d_im[h], _mm256_mul_pd(kk, ck));
-    }
-  }
-  for (int h = 0; h < H; ++h) {
-    Store2(ComplexMulAdd256(p[h], d_re[h], d_im[h], Load2(&c[2 * h][0], &c[2 * h + 1][0])), &out[2 * h].phi,
-           &out[2 * h + 1].phi);
-    Store2(f[h], &out[2 * h].f, &out[2 * h + 1].f);
-  }
+  for (int h = 0; h < H; ++h) Store2(p[h], &out[2 * h], &out[2 * h + 1]);
 }
 
 // MakeTransientGreenPairsInFluid four at a time in 256-bit registers: per lane the operations of
@@ -341,17 +250,20 @@ __attribute__((target("avx"))) int MakeTransientGreenPairsAvx(const double* Y, c
     const __m256d wi =
         _mm256_mul_pd(scale, _mm256_sqrt_pd(_mm256_mul_pd(half, _mm256_max_pd(_mm256_sub_pd(r, p), zero))));
     alignas(32) double a_re[4], a_im[4], w_re[4], w_im[4], arg[4] = {0.0, 0.0, 0.0, 0.0};
+    alignas(32) double log_abs[4] = {0.0, 0.0, 0.0, 0.0};
     _mm256_store_pd(a_re, p), _mm256_store_pd(a_im, _mm256_xor_pd(ya, sign));
     _mm256_store_pd(w_re, wr), _mm256_store_pd(w_im, wi);
     if (with_log) {
+      // ½ ln|w|² (|w|² as std::norm: re·re + im·im).
+      const __m256d norm = _mm256_add_pd(_mm256_mul_pd(wr, wr), _mm256_mul_pd(wi, wi));
+      _mm256_store_pd(log_abs, _mm256_mul_pd(half, PositiveLogarithmAvx(norm)));
       const __m256d u = _mm256_div_pd(ya, r_plus_p);
       const __m256d high = _mm256_cmp_pd(u, tan_3pi16, _CMP_GT_OQ);
       const __m256d mid = _mm256_andnot_pd(high, _mm256_cmp_pd(u, tan_pi16, _CMP_GT_OQ));
-      const __m256d v_high = _mm256_div_pd(_mm256_sub_pd(u, one), _mm256_add_pd(u, one));
-      const __m256d v_mid =
-          _mm256_div_pd(_mm256_sub_pd(u, tan_pi8), _mm256_add_pd(one, _mm256_mul_pd(u, tan_pi8)));
-      const __m256d low = _mm256_andnot_pd(_mm256_or_pd(high, mid), u);
-      const __m256d v = _mm256_or_pd(_mm256_or_pd(_mm256_and_pd(high, v_high), _mm256_and_pd(mid, v_mid)), low);
+      // v = (u − tan c)/(1 + u tan c) with tan c = 1, tan(π/8) or 0 per lane: one division, and the values of
+      // UnitArctangent's three branches (u − 0 = u, 1 + u·0 = 1, u/1 = u, 1 + u·1 = u + 1 exactly).
+      const __m256d tan_c = _mm256_or_pd(_mm256_and_pd(high, one), _mm256_and_pd(mid, tan_pi8));
+      const __m256d v = _mm256_div_pd(_mm256_sub_pd(u, tan_c), _mm256_add_pd(one, _mm256_mul_pd(u, tan_c)));
       const __m256d c = _mm256_or_pd(_mm256_and_pd(high, pi4), _mm256_and_pd(mid, pi8));
       const __m256d s = _mm256_mul_pd(v, v);
       __m256d q = _mm256_set1_pd(-1.0 / 21);
@@ -364,7 +276,7 @@ __attribute__((target("avx"))) int MakeTransientGreenPairsAvx(const double* Y, c
       TransientGreenPair& o = out[k + m];
       o.a = cd(a_re[m], a_im[m]);
       o.w = cd(w_re[m], w_im[m]);
-      o.log_w = with_log ? cd(0.5 * std::log(std::norm(o.w)), arg[m]) : cd(0.0);
+      o.log_w = with_log ? cd(log_abs[m], arg[m]) : cd(0.0);
       o.conj = Y[k + m] < 0;
     }
   }
@@ -379,20 +291,14 @@ bool HasAvx() {
 
 // P points (P = 4 or 8): the AVX form where the processor has it, else the SSE2 (or scalar) form; the same
 // bits either way.
-template <int P>
-void DawsonIntegralTableOnlyP(const cd* x, cd* phi) {
+template <class Tab, int P>
+void TableValuesP(const cd* x, cd* out) {
 #ifdef HULLOPT_AVX_TABLE
-  if (HasAvx()) return DawsonIntegralTableOnlyAvx<P / 2>(x, phi);
+  if (HasAvx()) return TableValuesAvx<Tab, P / 2>(x, out);
 #endif
-  for (int n = 0; n < P; n += 4) DawsonIntegralTableOnlyN<4>(x + n, phi + n);
+  for (int n = 0; n < P; n += 4) TableValuesN<Tab, 4>(x + n, out + n);
 }
-template <int P>
-void DawsonIntegralTableP(const cd* x, PhiAndF* out) {
-#ifdef HULLOPT_AVX_TABLE
-  if (HasAvx()) return DawsonIntegralTableAvx<P / 2>(x, out);
-#endif
-  for (int n = 0; n < P; n += 4) DawsonIntegralTableN<4>(x + n, out + n);
-}
+
 
 // Σ_{n>=1} c_n/(2n) x^{−2n}: the algebraic part of Φ − ½ ln x − (γ + ln 4)/4 (with a minus sign).
 cd PhiAlgebraicSeries(cd x) {
@@ -431,7 +337,7 @@ cd DawsonIntegral(cd x) {
   cd out;
   // std::norm, not std::abs: |x|² comparisons avoid a hypot call on this hot path.
   if (std::norm(x) < kAsymptoticRadius * kAsymptoticRadius) {
-    out = DawsonIntegralTableOnly(x);
+    out = TableValue<PhiTable>(x);
   } else {
     CheckAsymptoticSector(x);
     out = kPhiConstant + 0.5 * LogWithoutHypot(x) - PhiAlgebraicSeries(x) - kI * (M_PI / 4.0) * ErfcFirstQuadrant(x);
@@ -484,27 +390,26 @@ cd TransientGreenTimeIntegral(double Y, double Z, double t, double g) {
 
 namespace {
 
-// K inside the table's radius from Φ and F at x.
-// −8a(Φ + xF) + 2gt²(ln x − 2Φ + 2C) in real arithmetic: the products and sums of std::complex's (a finite
-// product is (ac − bd) + i(ad + bc)) without its NaN-recovery branches, so the same bits.
-cd KFromTable(cd x, cd a, double gt2, cd log_x, const PhiAndF& pf) {
-  const double sr = pf.phi.real() + (x.real() * pf.f.real() - x.imag() * pf.f.imag());
-  const double si = pf.phi.imag() + (x.real() * pf.f.imag() + x.imag() * pf.f.real());
-  const double mr = -8.0 * a.real(), mi = -8.0 * a.imag();
-  const double qr = (log_x.real() - 2.0 * pf.phi.real()) + 2.0 * kPhiConstant;
-  const double qi = log_x.imag() - 2.0 * pf.phi.imag();
-  const double k = 2.0 * gt2;
-  return {(mr * sr - mi * si) + k * qr, (mr * si + mi * sr) + k * qi};
+// K inside the table's radius from G at x (dawson_integral_table.h): 8a(G + x² ln x) in real arithmetic, the
+// products and sums of std::complex's (a finite product is (ac − bd) + i(ad + bc)) without its NaN-recovery
+// branches.
+cd KFromTable(cd x, cd a, cd log_x, cd G) {
+  const double x2r = x.real() * x.real() - x.imag() * x.imag(), x2i = x.real() * x.imag() + x.imag() * x.real();
+  const double br = G.real() + (x2r * log_x.real() - x2i * log_x.imag());
+  const double bi = G.imag() + (x2r * log_x.imag() + x2i * log_x.real());
+  const double mr = 8.0 * a.real(), mi = 8.0 * a.imag();
+  return {mr * br - mi * bi, mr * bi + mi * br};
 }
 
-// K at x for |Y| (first quadrant), with a = |Z| − i|Y|, gt² [m²] and ln x.
-cd SpaceTimeIntegralFirstQuadrant(cd x, cd a, double gt2, cd log_x) {
+// K at x for |Y| (first quadrant), with a = |Z| − i|Y| and ln x.
+cd SpaceTimeIntegralFirstQuadrant(cd x, cd a, cd log_x) {
   cd K;
   if (std::norm(x) < kAsymptoticRadius * kAsymptoticRadius) {
     // K = −8a(Φ + xF) + 2gt²(ln x − 2Φ + 2C): dK/da = −8Φ (F' = 1 − 2xF, dx/da = −x/2a), so dK/dζc = 8Φ.
-    // The constant 4C·gt² makes it the same function as the asymptotic form below; here gt² = 4a x² <= 144|a|,
-    // so the cancellation inside the bracket costs at most ~2 digits.
-    K = KFromTable(x, a, gt2, log_x, DawsonIntegralTable(x));
+    // With gt² = 4a x² it is 8a(G(x) + x² ln x), G = −Φ − xF + 2x²(C − Φ) entire, from its own table (one
+    // Horner chain). The constant 4C·gt² makes it the same function as the asymptotic form below; here
+    // |x|² < 36, so the cancellation between G ~ −x² ln x and x² ln x costs at most ~2 digits.
+    K = KFromTable(x, a, log_x, TableValue<KernelTable>(x));
   } else {
     // ln x − 2Φ + 2C = 2Σ c_n/(2n) x^{−2n} + i(π/2) erfc(x) with gt² = 4a x²: no gt²-sized cancellation left.
     CheckAsymptoticSector(x);
@@ -550,9 +455,10 @@ cd TransientGreenTimeIntegral(const TransientGreenPair& pair, double t) {
   return ConjIf(pair.conj, 8.0 * DawsonIntegral(t * pair.w));
 }
 
-cd TransientGreenSpaceTimeIntegral(const TransientGreenPair& pair, double t, double log_t, double g) {
+cd TransientGreenSpaceTimeIntegral(const TransientGreenPair& pair, double t, double log_t, double /*g*/) {
+  // g enters through pair.w (gt² = 4a x²).
   const cd x = t * pair.w;
-  return ConjIf(pair.conj, SpaceTimeIntegralFirstQuadrant(x, pair.a, g * t * t, cd(log_t, 0.0) + pair.log_w));
+  return ConjIf(pair.conj, SpaceTimeIntegralFirstQuadrant(x, pair.a, cd(log_t, 0.0) + pair.log_w));
 }
 
 cd TransientGreenSpaceTimeIntegral(double Y, double Z, double t, double g) {
@@ -569,15 +475,10 @@ namespace {
 
 // The table forms for 2P points (P pairs at two lags): the SSE2 two-point form for one pair, the four- or
 // eight-point form (AVX where available) for two or four.
-template <int P>
-void TableOnlyGroup(const cd* x, cd* out) {
-  if constexpr (P == 1) DawsonIntegralTableOnlyN<2>(x, out);
-  else DawsonIntegralTableOnlyP<2 * P>(x, out);
-}
-template <int P>
-void TableGroup(const cd* x, PhiAndF* out) {
-  if constexpr (P == 1) DawsonIntegralTableN<2>(x, out);
-  else DawsonIntegralTableP<2 * P>(x, out);
+template <class Tab, int P>
+void TableGroup(const cd* x, cd* out) {
+  if constexpr (P == 1) TableValuesN<Tab, 2>(x, out);
+  else TableValuesP<Tab, 2 * P>(x, out);
 }
 
 // P pairs at two lags in one interleaved table call when every x is inside the table's radius; otherwise
@@ -597,13 +498,61 @@ void TimeIntegralsGroup(const TransientGreenPair* pair, const double t[2], cd* o
       }
       return;
     }
-  TableOnlyGroup<P>(x, out);
+  TableGroup<PhiTable, P>(x, out);
   for (int n = 0; n < 2 * P; ++n) out[n] = ConjIf(pair[n / 2].conj, 8.0 * out[n]);
 }
+
+#ifdef HULLOPT_AVX_TABLE
+// p·q for [re, im | re, im] registers with q given as [qr, qr | ...] and [−qi, qi | ...]: per lane the products
+// and sum of the scalar (pr·qr − pi·qi, pr·qi + pi·qr) (the sums commute exactly), without ComplexMulAdd256's
+// addition (which would turn a −0 into +0).
+__attribute__((target("avx"))) inline __m256d ComplexMul256(__m256d p, __m256d q) {
+  const __m256d q_re = _mm256_movedup_pd(q);
+  const __m256d q_im = _mm256_xor_pd(_mm256_permute_pd(q, 0xF), _mm256_set_pd(0.0, -0.0, 0.0, -0.0));
+  return _mm256_add_pd(_mm256_mul_pd(p, q_re), _mm256_mul_pd(_mm256_permute_pd(p, 0x5), q_im));
+}
+
+// SpaceTimeIntegralsGroup's table branch for P = 2 or 4 pairs in AVX registers, one pair's two lags per
+// register: x = t·w, the radius test, G from the table and K = 8a(G + x² ln x) (KFromTable), per lane the
+// scalar operations, so the same bits. Returns false, with nothing written, when a point is beyond the table's
+// radius.
+template <int P>
+__attribute__((target("avx"))) bool SpaceTimeIntegralsAvx(const TransientGreenPair* pair, const double t[2],
+                                                          const double log_t[2], cd* out) {
+  const __m256d tt = _mm256_set_pd(t[1], t[1], t[0], t[0]);
+  const __m256d r2 = _mm256_set1_pd(kAsymptoticRadius * kAsymptoticRadius);
+  __m256d X[P];
+  cd x[2 * P];
+  int inside = 0xF;
+  for (int p = 0; p < P; ++p) {
+    X[p] = _mm256_mul_pd(tt, _mm256_broadcast_pd(reinterpret_cast<const __m128d*>(&pair[p].w)));
+    const __m256d sq = _mm256_mul_pd(X[p], X[p]);
+    inside &= _mm256_movemask_pd(_mm256_cmp_pd(_mm256_hadd_pd(sq, sq), r2, _CMP_LT_OQ));  // |x|² < r²
+    Store2(X[p], &x[2 * p], &x[2 * p + 1]);
+  }
+  if (inside != 0xF) return false;
+  cd G[2 * P];
+  TableValuesAvx<KernelTable, P>(x, G);
+  const __m256d lt = _mm256_set_pd(0.0, log_t[1], 0.0, log_t[0]), eight = _mm256_set1_pd(8.0);
+  for (int p = 0; p < P; ++p) {
+    const __m256d log_x = _mm256_add_pd(lt, _mm256_broadcast_pd(reinterpret_cast<const __m128d*>(&pair[p].log_w)));
+    const __m256d b = _mm256_add_pd(ComplexMul256(ComplexMul256(X[p], X[p]), log_x), Load2(&G[2 * p], &G[2 * p + 1]));
+    const __m256d m = _mm256_mul_pd(eight, _mm256_broadcast_pd(reinterpret_cast<const __m128d*>(&pair[p].a)));
+    __m256d k = ComplexMul256(b, m);
+    if (pair[p].conj) k = _mm256_xor_pd(k, _mm256_set_pd(-0.0, 0.0, -0.0, 0.0));
+    Store2(k, &out[2 * p], &out[2 * p + 1]);
+  }
+  return true;
+}
+#endif
 
 template <int P>
 void SpaceTimeIntegralsGroup(const TransientGreenPair* pair, const double t[2], const double log_t[2], double g,
                              cd* out) {
+#ifdef HULLOPT_AVX_TABLE
+  if constexpr (P > 1)
+    if (HasAvx() && SpaceTimeIntegralsAvx<P>(pair, t, log_t, out)) return;
+#endif
   cd x[2 * P];
   for (int n = 0; n < 2 * P; ++n) x[n] = t[n % 2] * pair[n / 2].w;
   constexpr double r2 = kAsymptoticRadius * kAsymptoticRadius;
@@ -617,12 +566,11 @@ void SpaceTimeIntegralsGroup(const TransientGreenPair* pair, const double t[2], 
       }
       return;
     }
-  PhiAndF pf[2 * P];
-  TableGroup<P>(x, pf);
+  cd G[2 * P];
+  TableGroup<KernelTable, P>(x, G);
   for (int n = 0; n < 2 * P; ++n) {
     const TransientGreenPair& pr = pair[n / 2];
-    const double tn = t[n % 2];
-    out[n] = ConjIf(pr.conj, KFromTable(x[n], pr.a, g * tn * tn, cd(log_t[n % 2], 0.0) + pr.log_w, pf[n]));
+    out[n] = ConjIf(pr.conj, KFromTable(x[n], pr.a, cd(log_t[n % 2], 0.0) + pr.log_w, G[n]));
   }
 }
 

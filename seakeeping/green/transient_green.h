@@ -19,6 +19,7 @@
 #include <cmath>
 #include <complex>
 
+#include "seakeeping/green/positive_logarithm.h"
 #include "seakeeping/green/unit_arctangent.h"
 
 namespace hullopt::sk {
@@ -42,7 +43,9 @@ std::complex<double> TransientGreenTimeIntegral(double Y, double Z, double t, do
 /// K(ζc, t) with dK/dζc = H⁽⁻¹⁾ [m]: the space integral of the time integral, so that along a straight
 /// source panel with dζc/ds = −i e^{iα}, ∫_panel H⁽⁻¹⁾ ds = i e^{−iα} [K(q2) − K(q1)] exactly. Closed form
 /// (F' = 1 − 2xF): K = −8a(Φ + xF) + 2gt²(ln x − 2Φ + (γ + ln 4)/2), defined up to a function of t only, which
-/// cancels in the panel difference. Same arguments and errors as TransientGreen; K = 0 at t = 0.
+/// cancels in the panel difference. With gt² = 4ax² this is K = 8a(G(x) + x² ln x), G = −Φ − xF + 2x²(C − Φ)
+/// (C = (γ + ln 4)/4) an entire function of x alone, tabulated (dawson_integral_table.h) and evaluated below
+/// |x| = 6. Same arguments and errors as TransientGreen; K = 0 at t = 0.
 std::complex<double> TransientGreenSpaceTimeIntegral(double Y, double Z, double t, double g);
 
 /// The lag-independent part of the kernel at one image offset (Y, Z): the square roots, the division and the
@@ -73,7 +76,7 @@ inline TransientGreenPair MakeTransientGreenPairInFluid(double Y, double Z, doub
   out.a = std::complex<double>(p, -Yabs);
   out.w = std::complex<double>(scale * std::sqrt(0.5 * (r + p)), scale * std::sqrt(0.5 * (r_minus_p > 0.0 ? r_minus_p : 0.0)));
   // ln w: arg w = ½ arg(conj a) in [0, π/4], whose tangent is the half-angle |Y|/(r + |Z|) (no cancellation).
-  if (with_log) out.log_w = std::complex<double>(0.5 * std::log(std::norm(out.w)), UnitArctangent(Yabs / (r + p)));
+  if (with_log) out.log_w = std::complex<double>(0.5 * PositiveLogarithm(std::norm(out.w)), UnitArctangent(Yabs / (r + p)));
   out.conj = Y < 0;
   return out;
 }
@@ -86,8 +89,8 @@ void MakeTransientGreenPairsInFluid(const double* Y, const double* Z, int n, dou
 /// H⁽⁻¹⁾ at lag t >= 0 [s] for a prepared pair (no argument checks: the strip kernel's hot path).
 std::complex<double> TransientGreenTimeIntegral(const TransientGreenPair& pair, double t);
 
-/// K at lag t > 0 [s] for a prepared pair, with log_t = ln t (shared by all pairs at one lag) and g [m/s²].
-/// K = 0 for t = 0 is the caller's case (ln 0 is not finite).
+/// K at lag t > 0 [s] for a prepared pair, with log_t = ln t (shared by all pairs at one lag) and g [m/s²]
+/// (which enters through pair.w). K = 0 for t = 0 is the caller's case (ln 0 is not finite).
 std::complex<double> TransientGreenSpaceTimeIntegral(const TransientGreenPair& pair, double t, double log_t,
                                                      double g);
 
@@ -111,8 +114,7 @@ void TransientGreenSpaceTimeIntegrals4x2(const TransientGreenPair pair[4], const
 std::complex<double> Dawson(std::complex<double> x);
 
 /// Φ(x) = ∫_0^x F(u) du for |arg(±x)| <= π/4 or |x| < 6. For |x| < 6: Taylor expansion (through the
-/// derivative recurrence of F) about the nearest node of a 0.1-spaced table of Φ and F, the table built once
-/// from the Taylor series at 0 (|x| <= 2.5) and Gauss–Legendre of F along the ray (beyond); for |x| >= 6 the
+/// derivative recurrence of F) about the nearest node of a 0.05-spaced table (dawson_integral_table.h); for |x| >= 6 the
 /// asymptotic series Φ = (γ + ln 4)/4 + ½ ln x − Σ c_n/(2n x^{2n}) − i(π/4) erfc(x). Φ is even and
 /// Φ(conj x) = conj Φ(x). Throws std::domain_error outside that domain.
 std::complex<double> DawsonIntegral(std::complex<double> x);

@@ -4,6 +4,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "seakeeping/strip/block_product.h"
+
 namespace hullopt::sk {
 
 StripKernel BuildStripKernel(const StripOperators& ops, const std::vector<double>& x_m) {
@@ -47,7 +49,7 @@ StripKernel BuildStripKernel(const StripOperators& ops, const std::vector<double
       if (n == m) rhs.setIdentity();
       for (int k = m; k < n; ++k) {
         if (ops.PanelCount(k) == 0) continue;
-        if (Pn > 0) rhs.noalias() += ops.Memory(n, k).lazyProduct(S[k]);
+        if (Pn > 0) AddProduct(ops.Memory(n, k), S[k], &rhs);
         j.noalias() += ops.MomentumMemory(n, k).lazyProduct(S[k]);
       }
       S[n] = Pn > 0 ? ops.Solve(n, rhs) : Eigen::MatrixXd(0, Pm);

@@ -177,15 +177,25 @@ void ComputeLevelsInto(const FieldSet& f, const SourceEnds& e, const std::vector
       },
       [&](const TransientGreenPair& p, int l) { return TransientGreenSpaceTimeIntegral(p, t[l], log_lag[l], g); },
       h.data());
-  for (int p = 0; p < nq; ++p) {
-    const std::complex<double>* hp = &h[static_cast<std::size_t>(p) * ne * nl];
-    for (int j = 0; j < ns; ++j)
-      for (int l = 0; l < nl; ++l) {
-        const double v = RealOfProduct(e.i_e_minus_ialpha[j], hp[e.second[j] * nl + l] - hp[e.first[j] * nl + l]);
-        out[l].pl(j) += f.wnz[p] * v;
-        if (transport) out[l].pt(j) += f.wt[p] * v;
-        if (lateral) out[l].plat(0, j) += f.wny[p] * v, out[l].plat(1, j) += f.wr4[p] * v;
+  // Per source panel and lag the sums over the field points in registers, in the order of the points (the
+  // values of accumulating into the zeroed rows point by point, without a store and reload per term).
+  const std::size_t stride = static_cast<std::size_t>(ne) * nl;
+  for (int j = 0; j < ns; ++j) {
+    const std::complex<double> ie = e.i_e_minus_ialpha[j];
+    const std::size_t first = static_cast<std::size_t>(e.first[j]) * nl, second = static_cast<std::size_t>(e.second[j]) * nl;
+    for (int l = 0; l < nl; ++l) {
+      double pl = 0.0, pt = 0.0, py = 0.0, pr = 0.0;
+      const std::complex<double>* hp = &h[l];
+      for (int p = 0; p < nq; ++p, hp += stride) {
+        const double v = RealOfProduct(ie, hp[second] - hp[first]);
+        pl += f.wnz[p] * v;
+        if (transport) pt += f.wt[p] * v;
+        if (lateral) py += f.wny[p] * v, pr += f.wr4[p] * v;
       }
+      out[l].pl(j) = pl;
+      if (transport) out[l].pt(j) = pt;
+      if (lateral) out[l].plat(0, j) = py, out[l].plat(1, j) = pr;
+    }
   }
   for (int l = 0; l < nl; ++l)
     out[l].pl *= -rho * kInv2Pi, out[l].pt *= -rho * kInv2Pi, out[l].plat *= -rho * kInv2Pi;

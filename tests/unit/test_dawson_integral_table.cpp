@@ -10,14 +10,14 @@ using namespace hullopt::sk::dawson_table;
 
 TEST_CASE("embedded Dawson-integral table: the size of the table the layout describes") {
   const std::size_t doubles = static_cast<std::size_t>(hullopt_dawson_integral_table_end - hullopt_dawson_integral_table);
-  CHECK(doubles == 2 * kValues);
+  CHECK(doubles == 2 * (kValues + kKernelValues));
 }
 
 TEST_CASE("embedded Dawson-integral table: bit for bit the table computed at run time") {
   const auto computed = ComputeDawsonIntegralTable();
-  REQUIRE(computed.size() == kValues);
+  REQUIRE(computed.size() == kValues + kKernelValues);
   std::size_t differing = 0;
-  for (std::size_t k = 0; k < kValues; ++k)
+  for (std::size_t k = 0; k < computed.size(); ++k)
     if (std::memcmp(&computed[k], &Table()[k], sizeof computed[k]) != 0) ++differing;
   CHECK(differing == 0);
   // A spot check that the layout is the one the evaluation assumes: node (0, 0) holds Φ(0) = 0 and F(0) = 0, and
@@ -25,4 +25,12 @@ TEST_CASE("embedded Dawson-integral table: bit for bit the table computed at run
   CHECK(Table()[NodeOffset(0, 0)] == std::complex<double>(0.0, 0.0));
   CHECK(Table()[NodeOffset(0, 0) + 1] == std::complex<double>(0.0, 0.0));
   CHECK(Table()[NodeOffset(0, 0) + 2] == std::complex<double>(0.5, 0.0));
+  // G's table right after it: at x0 = 0, G0 = −Φ(0) = 0, G1 = −2F(0) = 0, the δ² coefficient 2C − 3/2 − 2Φ(0)
+  // (C = (γ + ln 4)/4), and the δ³ one −4c_1/6 = 0; the last node of the last row is (kGridN, kGridN).
+  CHECK(KernelTable() == Table() + kValues);
+  CHECK(KernelTable()[KernelNodeOffset(0, 0)] == std::complex<double>(0.0, 0.0));
+  CHECK(KernelTable()[KernelNodeOffset(0, 0) + 1] == std::complex<double>(0.0, 0.0));
+  CHECK(KernelTable()[KernelNodeOffset(0, 0) + 2] == std::complex<double>(2.0 * kPhiConstant - 1.5, 0.0));
+  CHECK(KernelTable()[KernelNodeOffset(0, 0) + 3] == std::complex<double>(0.0, 0.0));
+  CHECK(KernelNodeOffset(kGridN, kGridN) + kKernelCoefficients == kKernelValues);
 }
