@@ -185,7 +185,8 @@ void ComputeLevelsInto(const FieldSet& f, const SourceEnds& e, const std::vector
     const std::size_t first = static_cast<std::size_t>(e.first[j]) * nl, second = static_cast<std::size_t>(e.second[j]) * nl;
     for (int l = 0; l < nl; ++l) {
       double pl = 0.0, pt = 0.0, py = 0.0, pr = 0.0;
-      const std::complex<double>* hp = &h[l];
+      // No field points (a dry step): the sums are zero and h may be empty, so no element of it is taken.
+      const std::complex<double>* hp = nq > 0 ? &h[static_cast<std::size_t>(l)] : nullptr;
       for (int p = 0; p < nq; ++p, hp += stride) {
         const double v = RealOfProduct(ie, hp[second] - hp[first]);
         pl += f.wnz[p] * v;
