@@ -15,30 +15,32 @@ namespace {
 //  - the reduction: a p x p by p x p product for every (m <= k < n): S^3/6 x p^3 multiply-adds;
 //  - memory: the memory operators, S^2/2 matrices p x p (doubles), dominate; responses and force rows add
 //    S p^2 and S^2 P.
-// Constants: CPU seconds of one core, measured with hullopt rao (OMP_NUM_THREADS=1, Release, gcc 12, the shared
-// 2-core build machine, adaptive_grid off) on the Delft 372 catamaran (examples/rao_delft372.yaml, 45
-// frequencies) at 40 x 14, 80 x 14, 40 x 28, 80 x 28, 160 x 14, 160 x 28 and 40 x 56 sections x panels: 0.12,
-// 0.58, 0.56, 2.88, 2.61, 18.0 and 2.21 s, peak resident memory 13, 19, 18, 38, 44, 116 and 38 MB
-// (tests/unit/test_run_cost.cpp checks the model against these). The two constants are their least-squares fit
-// in relative error (every run within 25 %): the Green term dominates small strips, the reduction (the
-// coefficient-based p x p products of the memory sums) the large ones.
-constexpr double kSecondsPerGreenEvaluation = 1.9e-7;
-constexpr double kSecondsPerReductionMultiplyAdd = 8.2e-10;
+// Constants: CPU seconds of one core, measured with hullopt rao (OMP_NUM_THREADS=1, Release, gcc 12, the 2-core
+// build machine, quiet, adaptive_grid off) on the Delft 372 catamaran (examples/rao_delft372.yaml, 45
+// frequencies) at 40 x 14, 80 x 14, 40 x 28, 80 x 28, 160 x 14, 160 x 28, 40 x 56 and 80 x 56 sections x panels:
+// 0.08, 0.30, 0.28, 1.37, 1.37, 7.63, 1.88 and 6.10 s, peak resident memory 14, 21, 20, 40, 45, 117, 39 and
+// 110 MB (tests/unit/test_run_cost.cpp checks the model against these). The two constants are their
+// least-squares fit in relative error (every run within 30 % but 40 x 56, 1.4 times the estimate): the Green
+// term dominates small strips, the reduction (the p x p block products of the memory sums) the large ones.
+constexpr double kSecondsPerGreenEvaluation = 1.3e-7;
+constexpr double kSecondsPerReductionMultiplyAdd = 2.9e-10;
+// One periodic-path frequency: the kernel's force rows against the motion's normal velocities, S^2/2 x P
+// multiply-adds, plus a 2 x 2 solve (a small part of the runs above).
 constexpr double kSecondsPerSweepMultiplyAdd = 2.0e-9;
 // Time marching: every frequency marched to a steady state (up to MarchingOptions::max_periods); measured at
 // 20 x 8, 5 frequencies (0.09 s against 0.06 s periodic with 45) as about 700 periodic sweeps per frequency.
 constexpr double kTimeMarchingFactor = 1000.0;
 // Strip theory (frequency-domain sections): P^2 frequency-domain Green evaluations per section and frequency;
-// measured 3.45 s at 40 x 14, 45 frequencies on the catamaran (28 panels per section; the half-section heave
+// measured 3.00 s at 40 x 14, 45 frequencies on the catamaran (28 panels per section; the half-section heave
 // solver).
-constexpr double kSecondsPerFrequencyDomainEvaluation = 2.4e-6;
+constexpr double kSecondsPerFrequencyDomainEvaluation = 2.1e-6;
 // Oblique seas (docs/performance.md, "Oblique seas: cost per heading", "The time-domain strip method over
 // headings"): the time-domain kernel with its lateral rows is the kernel above on full sections (p = P: twice
 // the Green evaluations, eight times the reduction; 139 ms against 61 ms for the mirror-reduced head-sea
 // kernel of the Delft 372 demihull 40 x 14), and each heading's periodic sweep of three rows costs 22 ms against
 // 6.6 ms for the head-sea sweep; the oblique strip theory's full sections cost 1.94 s per heading at speed
 // against 0.78 s for the head-sea half sections (the catamaran 40 x 14, 20 frequencies; `rao` of the
-// catamaran at 40 x 14, 45 frequencies: 3.45 s head seas, 7.6 s at one heading, 40 s at five).
+// catamaran at 40 x 14, 45 frequencies: 3.0 s head seas, 35 s at five headings).
 constexpr double kObliqueSweepFactorPerHeading = 3.3;
 constexpr double kObliqueStripTheoryFactorPerHeading = 2.5;
 // Libraries, hull and tables: the 20 x 8 run's 0.06 s and 11 MB.

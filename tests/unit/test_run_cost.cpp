@@ -30,9 +30,9 @@ TEST_CASE("run cost: within a factor 1.5 of measured runs", "[run_cost]") {
     int sections, panels;
     double cpu_s, rss_mb;
   };
-  const Measured runs[] = {{40, 14, 0.12, 13.1},  {80, 14, 0.58, 19.3},  {40, 28, 0.56, 18.3},
-                           {80, 28, 2.88, 38.2},  {160, 14, 2.61, 44.2}, {160, 28, 18.02, 116.0},
-                           {40, 56, 2.21, 38.0},  {80, 56, 17.42, 108.1}};
+  const Measured runs[] = {{40, 14, 0.08, 14.4},  {80, 14, 0.30, 20.6},  {40, 28, 0.28, 19.5},
+                           {80, 28, 1.37, 39.6},  {160, 14, 1.37, 45.4}, {160, 28, 7.63, 117.4},
+                           {40, 56, 1.88, 39.5},  {80, 56, 6.10, 109.5}};
   // A refusal is for runs far beyond the limits; a factor 1.5 keeps the printed figure honest ("about").
   constexpr double kTimeFactor = 1.5;
   // Memory is counted, not timed: the operators are the resident set.
@@ -46,24 +46,24 @@ TEST_CASE("run cost: within a factor 1.5 of measured runs", "[run_cost]") {
     CHECK(mb < kMemoryFactor * r.rss_mb);
     CHECK(mb > r.rss_mb / kMemoryFactor);
   }
-  // Conventional strip theory: 3.45 s at 40 x 14 (frequency-domain half sections).
+  // Conventional strip theory: 3.00 s at 40 x 14 (frequency-domain half sections).
   StripWork stf = Catamaran(40, 14);
   stf.method = "strip_theory_stf";
   const double stf_s = EstimateRunCost(stf).seconds;
-  CHECK(stf_s < kTimeFactor * 3.45);
-  CHECK(stf_s > 3.45 / kTimeFactor);
-  // Oblique seas, 5 headings (180, 165, 150, 135, 120 deg) at 40 x 14: 0.50 s by the time-domain strip method
-  // (the kernel with its lateral rows), 40 s by the oblique-sea strip theory (full sections, each heading its
+  CHECK(stf_s < kTimeFactor * 3.00);
+  CHECK(stf_s > 3.00 / kTimeFactor);
+  // Oblique seas, 5 headings (180, 165, 150, 135, 120 deg) at 40 x 14: 0.33 s by the time-domain strip method
+  // (the kernel with its lateral rows), 35 s by the oblique-sea strip theory (full sections, each heading its
   // own encounter frequencies).
   StripWork td5 = Catamaran(40, 14);
   td5.headings = 5;
   stf.headings = 5;
   const double td5_s = EstimateRunCost(td5).seconds, stf5_s = EstimateRunCost(stf).seconds;
   INFO("estimates: 5 headings time-domain " << td5_s << " s, strip theory " << stf5_s << " s");
-  CHECK(td5_s < kTimeFactor * 0.50);
-  CHECK(td5_s > 0.50 / kTimeFactor);
-  CHECK(stf5_s < kTimeFactor * 40.0);
-  CHECK(stf5_s > 40.0 / kTimeFactor);
+  CHECK(td5_s < kTimeFactor * 0.33);
+  CHECK(td5_s > 0.33 / kTimeFactor);
+  CHECK(stf5_s < kTimeFactor * 35.0);
+  CHECK(stf5_s > 35.0 / kTimeFactor);
 }
 
 TEST_CASE("run cost: scaling follows the operation counts", "[run_cost]") {
@@ -103,16 +103,12 @@ TEST_CASE("run cost: refusals name the limit and the key", "[run_cost]") {
   CHECK_THAT(memory, Catch::Contains("solver.sections = 400 and solver.panels = 100"));
   CHECK_THAT(memory, Catch::Contains("--force"));
 
-  // A catamaran at the maxima (the largest strip the documented limits allow for two bodies): 6 GiB, within the
-  // memory limit, but about 2.5 h of one core (the reduction, S^3 p^3 / 6 multiply-adds, dominates there):
-  // refused for its time, naming the resolution. 160 x 14 passes.
+  // A catamaran at the maxima (the largest strip the documented limits allow for two bodies) passes: 6 GiB and
+  // about 55 min of one core (the reduction, S^3 p^3 / 6 multiply-adds, dominates there).
   const StripWork cat = Catamaran(400, 100);
   CHECK(EstimateRunCost(cat).bytes < hullopt::io::kCostLimitBytes);
-  CHECK(EstimateRunCost(cat).seconds > hullopt::io::kCostLimitSeconds);
-  const std::string time = RunCostRefusal(cat, EstimateRunCost(cat));
-  CHECK_THAT(time, Catch::Contains("estimated time"));
-  CHECK_THAT(time, Catch::Contains("solver.sections = 400 and solver.panels = 100"));
-  CHECK(RunCostRefusal(Catamaran(160, 14), EstimateRunCost(Catamaran(160, 14))).empty());
+  CHECK(EstimateRunCost(cat).seconds < hullopt::io::kCostLimitSeconds);
+  CHECK(RunCostRefusal(cat, EstimateRunCost(cat)).empty());
 
   // An explore of 200 designs over five headings at 40 x 14: by the time-domain method within the limits, by the
   // oblique-sea strip theory (about 40 s a design) refused, the samples driving it.
